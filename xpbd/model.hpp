@@ -1,0 +1,101 @@
+// The physical system both solvers read (DESIGN.md, "The model shared by XPBD and the
+// reference"): particles with positions, velocities and inverse masses, and the constraint
+// sets with their compliances α and Rayleigh damping coefficients β. It holds data only; the
+// XPBD solver and the reference FEM solver each bring their own bookkeeping.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "xpbd/tet_mesh.hpp"
+#include "xpbd/types.hpp"
+
+namespace rice::xpbd {
+
+struct Particles {
+  Positions x;                ///< #P by 3 positions [m]
+  Positions v;                ///< #P by 3 velocities [m/s]
+  Eigen::VectorXd w;          ///< #P inverse masses [1/kg]; 0 pins a particle
+  int size() const { return static_cast<int>(x.rows()); }
+};
+
+/// C = |x_i − x_j| − L (distance_constraint.hpp).
+struct DistanceConstraint {
+  std::array<int, 2> particles;
+  double rest_length;
+  double compliance;  ///< α [m/N]
+  double damping;     ///< β [N s/m], in D = ½ Ċᵀ β Ċ
+};
+
+/// C = V(x) − V0 (tet_volume_constraint.hpp).
+struct TetVolumeConstraint {
+  std::array<int, 4> particles;
+  double rest_volume;
+  double compliance;  ///< α [1/(Pa m³)]
+  double damping;     ///< β
+};
+
+/// The stable Neo-Hookean pair of one tetrahedron (neo_hookean_constraints.hpp).
+struct NeoHookeanTet {
+  std::array<int, 4> particles;
+  Mat3 Dm_inv;         ///< inverse rest edge matrix
+  double rest_volume;  ///< V [m³]
+  double mu, lambda;   ///< Lamé parameters [Pa]
+  double beta_deviatoric, beta_hydrostatic;  ///< β_D, β_H
+  double compliance_deviatoric() const { return 1.0 / (mu * rest_volume); }      ///< α_D
+  double compliance_hydrostatic() const { return 1.0 / (lambda * rest_volume); }  ///< α_H
+};
+
+/// Pulls particle i towards a target point: the vector constraint C = x_i − p (three scalar
+/// constraints sharing one compliance). α = 0 holds it exactly.
+struct Attachment {
+  int particle;
+  Vec3 target;
+  double compliance;
+};
+
+/// Inequality constraint C = n·x − d ≥ 0 for every particle (frictionless, rigid).
+struct GroundPlane {
+  Vec3 normal{0.0, 0.0, 1.0};
+  double offset = 0.0;
+};
+
+struct Model {
+  Particles particles;
+  std::vector<DistanceConstraint> distances;
+  std::vector<TetVolumeConstraint> volumes;
+  std::vector<NeoHookeanTet> neo_hookean;
+  std::vector<Attachment> attachments;
+  std::optional<GroundPlane> ground;
+  Vec3 gravity{0.0, 0.0, -9.81};
+  Positions external_forces;  ///< #P by 3 [N], or empty for none
+};
+
+/// Lamé parameters from Young's modulus E [Pa] and Poisson's ratio ν in (−1, 0.5).
+struct LameParameters {
+  double mu, lambda;
+};
+LameParameters lame_from_young_poisson(double young, double poisson);
+
+/// Particles at the mesh vertices at rest, with lumped masses from density ρ [kg/m³].
+Particles make_particles(const TetMesh& mesh, double density);
+
+/// One Neo-Hookean pair per tetrahedron. `rayleigh_time` τ [s] sets stiffness-proportional
+/// damping β = τ/α for both constraints, so that γ = αβ/h = τ/h (XPBD eq. 26).
+void add_neo_hookean_tets(Model& model, const TetMesh& mesh, LameParameters material,
+                          double rayleigh_time = 0.0);
+
+/// One distance constraint per unique tet edge. Each spring's compliance is
+/// α = L² / (E V_e), V_e the volume of the tets around the edge shared among their six edges:
+/// a rough spring-network stand-in for Young's modulus E (it is not a calibrated material).
+void add_edge_springs(Model& model, const TetMesh& mesh, double young, double rayleigh_time = 0.0);
+
+/// One volume constraint per tetrahedron with compliance α = 1 / (K V), K a bulk modulus.
+void add_tet_volumes(Model& model, const TetMesh& mesh, double bulk_modulus,
+                     double rayleigh_time = 0.0);
+
+/// Pins particles (inverse mass 0, velocity 0).
+void pin_particles(Model& model, const std::vector<int>& indices);
+
+}  // namespace rice::xpbd

@@ -1,0 +1,305 @@
+// XPBD substepping solver; see solver.hpp. Every projection below is one line of XPBD eq. 26
+// (damped_update.hpp) around a stateless constraint kernel.
+#include "xpbd/solver.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+
+#include "xpbd/damped_update.hpp"
+#include "xpbd/distance_constraint.hpp"
+#include "xpbd/energy.hpp"
+#include "xpbd/neo_hookean_constraints.hpp"
+#include "xpbd/tet_volume_constraint.hpp"
+
+namespace rice::xpbd {
+namespace {
+
+template <size_t Arity, class Constraint>
+Coloring color_constraints(const std::vector<Constraint>& constraints, int particle_count) {
+  std::vector<int> ids;
+  ids.reserve(Arity * constraints.size());
+  for (const Constraint& c : constraints) ids.insert(ids.end(), c.particles.begin(), c.particles.end());
+  return greedy_coloring(ids, Arity, particle_count);
+}
+
+Eigen::Map<Vec3> position(Positions& x, int i) { return Eigen::Map<Vec3>(x.data() + 3 * i); }
+Eigen::Map<const Vec3> position(const Positions& x, int i) {
+  return Eigen::Map<const Vec3>(x.data() + 3 * i);
+}
+
+}  // namespace
+
+Solver::Solver(Model& model, const SolverSettings& settings) : model_(model), settings_(settings) {
+  const Particles& p = model.particles;
+  if (p.v.rows() != p.x.rows() || p.w.size() != p.x.rows())
+    throw std::invalid_argument("Solver: particles have " + std::to_string(p.x.rows()) +
+                                " positions, " + std::to_string(p.v.rows()) + " velocities, " +
+                                std::to_string(p.w.size()) + " inverse masses");
+  if (model.external_forces.rows() != 0 && model.external_forces.rows() != p.x.rows())
+    throw std::invalid_argument("Solver: external_forces must be empty or one row per particle");
+  if (!(settings.time_step > 0.0) || settings.substeps < 1 || settings.iterations < 1)
+    throw std::invalid_argument("Solver: need time_step > 0, substeps >= 1, iterations >= 1");
+  if (!(settings.pbd_stiffness >= 0.0 && settings.pbd_stiffness <= 1.0))
+    throw std::invalid_argument("Solver: pbd_stiffness must lie in [0, 1], got " +
+                                std::to_string(settings.pbd_stiffness));
+  if (settings.method == Method::kPbd && !model.neo_hookean.empty())
+    throw std::invalid_argument(
+        "Solver: PBD mode cannot project the Neo-Hookean pair (C_D and C_H are not zero at "
+        "rest, so a stiffness in [0, 1] has no meaning for them); use springs and volumes");
+  for (const Attachment& a : model.attachments)
+    if (a.particle < 0 || a.particle >= p.size())
+      throw std::invalid_argument("Solver: attachment names particle " + std::to_string(a.particle));
+  coloring_distance_ = color_constraints<2>(model.distances, p.size());
+  coloring_volume_ = color_constraints<4>(model.volumes, p.size());
+  coloring_neo_hookean_ = color_constraints<4>(model.neo_hookean, p.size());
+}
+
+std::vector<int> Solver::color_counts() const {
+  return {coloring_neo_hookean_.colors(), coloring_volume_.colors(), coloring_distance_.colors()};
+}
+
+void Solver::step() {
+  const double h = settings_.time_step / settings_.substeps;
+  for (substep_ = 0; substep_ < settings_.substeps; ++substep_) substep(h);
+  if (settings_.diagnostics) diagnostics_ = measure(h);
+  ++step_;
+}
+
+void Solver::substep(double h) {
+  x_previous_ = model_.particles.x;
+  predict(h);
+  lambda_distance_.assign(model_.distances.size(), 0.0);
+  lambda_volume_.assign(model_.volumes.size(), 0.0);
+  lambda_neo_hookean_.assign(model_.neo_hookean.size(), Vec2::Zero());
+  lambda_attachment_.assign(model_.attachments.size(), Vec3::Zero());
+  for (int k = 0; k < settings_.iterations; ++k) iterate(h);
+  Particles& p = model_.particles;
+  p.v = (p.x - x_previous_) / h;
+  check_positions();
+}
+
+void Solver::predict(double h) {
+  // x̃ = x + h v + h² M⁻¹ f_ext with f_ext = m g + external forces (pinned particles stay).
+  Particles& p = model_.particles;
+  const bool has_forces = model_.external_forces.rows() != 0;
+  for (int i = 0; i < p.size(); ++i) {
+    if (p.w[i] == 0.0) {
+      p.v.row(i).setZero();
+      continue;
+    }
+    Vec3 acceleration = model_.gravity;
+    if (has_forces) acceleration += p.w[i] * model_.external_forces.row(i).transpose();
+    p.v.row(i) += h * acceleration.transpose();
+    p.x.row(i) += h * p.v.row(i);
+  }
+}
+
+template <class Project>
+void Solver::for_each_constraint(const Coloring& coloring, Project&& project) {
+  if (settings_.execution == Execution::kSerial) {
+    const int count = static_cast<int>(coloring.order.size());
+    for (int c = 0; c < count; ++c) project(c);
+    return;
+  }
+  for (int color = 0; color < coloring.colors(); ++color) {
+    const auto members = coloring.color(color);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, members.size(), 128),
+                      [&](const tbb::blocked_range<size_t>& range) {
+                        for (size_t m = range.begin(); m != range.end(); ++m) project(members[m]);
+                      });
+  }
+}
+
+void Solver::iterate(double h) {
+  for_each_constraint(coloring_neo_hookean_, [&](int c) { project_neo_hookean(c, h); });
+  for_each_constraint(coloring_volume_, [&](int c) { project_volume(c, h); });
+  for_each_constraint(coloring_distance_, [&](int c) { project_distance(c, h); });
+  project_attachments(h);
+  if (model_.ground) project_ground();
+}
+
+void Solver::project_distance(int c, double h) {
+  const DistanceConstraint& d = model_.distances[c];
+  Positions& x = model_.particles.x;
+  const Eigen::VectorXd& w = model_.particles.w;
+  const int i = d.particles[0], j = d.particles[1];
+  const double wi = w[i], wj = w[j];
+  if (wi + wj == 0.0) return;
+  auto xi = position(x, i);
+  auto xj = position(x, j);
+  const double C = distance_constraint_value(xi, xj, d.rest_length);
+  const Vec6 g = distance_constraint_gradient(xi, xj);
+  if (g.isZero()) return;  // coincident particles: no direction to push along
+  const Vec3 n = g.head<3>();
+  double delta_lambda;
+  if (settings_.method == Method::kPbd) {
+    delta_lambda = -settings_.pbd_stiffness * C / (wi + wj);
+  } else {
+    const double grad_dot_dx =
+        n.dot((xi - position(x_previous_, i)) - (xj - position(x_previous_, j)));
+    delta_lambda = damped_delta_lambda(C, lambda_distance_[c], scale_compliance(d.compliance, d.damping, h),
+                                       grad_dot_dx, wi + wj);
+    lambda_distance_[c] += delta_lambda;
+  }
+  if (!std::isfinite(delta_lambda)) fail("distance", c);
+  xi += wi * delta_lambda * n;
+  xj -= wj * delta_lambda * n;
+}
+
+void Solver::project_volume(int c, double h) {
+  const TetVolumeConstraint& v = model_.volumes[c];
+  Positions& x = model_.particles.x;
+  const Eigen::VectorXd& w = model_.particles.w;
+  const auto& id = v.particles;
+  const Vec12 xs = stack(position(x, id[0]), position(x, id[1]), position(x, id[2]), position(x, id[3]));
+  const double C = tet_volume_constraint_value(xs, v.rest_volume);
+  const Vec12 g = tet_volume_constraint_gradient(xs);
+  double grad_w_grad = 0.0, grad_dot_dx = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    grad_w_grad += w[id[k]] * g.segment<3>(3 * k).squaredNorm();
+    grad_dot_dx += g.segment<3>(3 * k).dot(xs.segment<3>(3 * k) - position(x_previous_, id[k]));
+  }
+  if (grad_w_grad == 0.0) return;
+  double delta_lambda;
+  if (settings_.method == Method::kPbd) {
+    delta_lambda = -settings_.pbd_stiffness * C / grad_w_grad;
+  } else {
+    delta_lambda = damped_delta_lambda(C, lambda_volume_[c], scale_compliance(v.compliance, v.damping, h),
+                                       grad_dot_dx, grad_w_grad);
+    lambda_volume_[c] += delta_lambda;
+  }
+  if (!std::isfinite(delta_lambda)) fail("tet volume", c);
+  for (int k = 0; k < 4; ++k) position(x, id[k]) += w[id[k]] * delta_lambda * g.segment<3>(3 * k);
+}
+
+void Solver::project_neo_hookean(int c, double h) {
+  // The deviatoric and hydrostatic constraints of one tet solved jointly (Macklin & Müller
+  // 2021 §5): solved one after the other they would fight at rest, where neither is zero.
+  const NeoHookeanTet& t = model_.neo_hookean[c];
+  Positions& x = model_.particles.x;
+  const Eigen::VectorXd& w = model_.particles.w;
+  const auto& id = t.particles;
+  const double wk[4] = {w[id[0]], w[id[1]], w[id[2]], w[id[3]]};
+  if (wk[0] + wk[1] + wk[2] + wk[3] == 0.0) return;
+  const Mat3 F = edge_matrix(position(x, id[0]), position(x, id[1]), position(x, id[2]),
+                             position(x, id[3])) * t.Dm_inv;
+  const Vec2 C(neo_hookean_deviatoric_value(F),
+               neo_hookean_hydrostatic_value(F, neo_hookean_gamma(t.mu, t.lambda)));
+  // Gradients for x1..x3 are the columns of (∂C/∂F) Dm⁻ᵀ; x0 gets minus their sum.
+  Eigen::Matrix<double, 3, 4> grad_D, grad_H;
+  grad_D.rightCols<3>() = neo_hookean_deviatoric_dF(F) * t.Dm_inv.transpose();
+  grad_H.rightCols<3>() = neo_hookean_hydrostatic_dF(F) * t.Dm_inv.transpose();
+  grad_D.col(0) = -grad_D.rightCols<3>().rowwise().sum();
+  grad_H.col(0) = -grad_H.rightCols<3>().rowwise().sum();
+  Mat2 gwg = Mat2::Zero();
+  Vec2 grad_dot_dx = Vec2::Zero();
+  for (int k = 0; k < 4; ++k) {
+    gwg(0, 0) += wk[k] * grad_D.col(k).squaredNorm();
+    gwg(0, 1) += wk[k] * grad_D.col(k).dot(grad_H.col(k));
+    gwg(1, 1) += wk[k] * grad_H.col(k).squaredNorm();
+    const Vec3 dx = position(x, id[k]) - position(x_previous_, id[k]);
+    grad_dot_dx[0] += grad_D.col(k).dot(dx);
+    grad_dot_dx[1] += grad_H.col(k).dot(dx);
+  }
+  gwg(1, 0) = gwg(0, 1);
+  const Vec2 delta_lambda = damped_delta_lambda_pair(
+      C, lambda_neo_hookean_[c], scale_compliance(t.compliance_deviatoric(), t.beta_deviatoric, h),
+      scale_compliance(t.compliance_hydrostatic(), t.beta_hydrostatic, h), grad_dot_dx, gwg);
+  if (!delta_lambda.allFinite()) fail("neo-hookean tet", c);
+  lambda_neo_hookean_[c] += delta_lambda;
+  for (int k = 0; k < 4; ++k)
+    position(x, id[k]) += wk[k] * (grad_D.col(k) * delta_lambda[0] + grad_H.col(k) * delta_lambda[1]);
+}
+
+void Solver::project_attachments(double h) {
+  // C = x − p: three constraints with gradient I, solved together in closed form.
+  Positions& x = model_.particles.x;
+  for (size_t a = 0; a < model_.attachments.size(); ++a) {
+    const Attachment& attachment = model_.attachments[a];
+    const double w = model_.particles.w[attachment.particle];
+    const double alpha_tilde = attachment.compliance / (h * h);
+    if (w + alpha_tilde == 0.0) continue;
+    auto xi = position(x, attachment.particle);
+    const Vec3 delta_lambda = (-(xi - attachment.target) - alpha_tilde * lambda_attachment_[a]) /
+                              (w + alpha_tilde);
+    if (!delta_lambda.allFinite()) fail("attachment", static_cast<int>(a));
+    lambda_attachment_[a] += delta_lambda;
+    xi += w * delta_lambda;
+  }
+}
+
+void Solver::project_ground() {
+  // C = n·x − d ≥ 0 with α = 0: a particle below the plane moves back onto it along n.
+  const GroundPlane& ground = *model_.ground;
+  Particles& p = model_.particles;
+  for (int i = 0; i < p.size(); ++i) {
+    if (p.w[i] == 0.0) continue;
+    auto xi = position(p.x, i);
+    const double C = ground.normal.dot(xi) - ground.offset;
+    if (C < 0.0) xi -= C * ground.normal;
+  }
+}
+
+void Solver::check_positions() const {
+  const Positions& x = model_.particles.x;
+  for (int i = 0; i < x.rows(); ++i)
+    if (!x.row(i).allFinite())
+      throw SimulationError("step " + std::to_string(step_) + ", substep " +
+                            std::to_string(substep_) + ": particle " + std::to_string(i) +
+                            " has a non-finite position (check its velocity, mass and forces)");
+}
+
+void Solver::fail(const char* constraint_type, int index) const {
+  throw SimulationError("step " + std::to_string(step_) + ", substep " + std::to_string(substep_) +
+                        ": non-finite multiplier update in " + constraint_type + " constraint " +
+                        std::to_string(index));
+}
+
+StepDiagnostics Solver::measure(double h) const {
+  const Positions& x = model_.particles.x;
+  double residual2 = 0.0;
+  const auto add = [&](double C, double alpha, double lambda) {
+    const double r = C + alpha / (h * h) * lambda;
+    residual2 += r * r;
+  };
+  for (size_t c = 0; c < model_.distances.size(); ++c) {
+    const DistanceConstraint& d = model_.distances[c];
+    add(distance_constraint_value(position(x, d.particles[0]), position(x, d.particles[1]), d.rest_length),
+        d.compliance, lambda_distance_[c]);
+  }
+  for (size_t c = 0; c < model_.volumes.size(); ++c) {
+    const TetVolumeConstraint& v = model_.volumes[c];
+    const auto& id = v.particles;
+    add(tet_volume_constraint_value(
+            stack(position(x, id[0]), position(x, id[1]), position(x, id[2]), position(x, id[3])),
+            v.rest_volume),
+        v.compliance, lambda_volume_[c]);
+  }
+  for (size_t c = 0; c < model_.neo_hookean.size(); ++c) {
+    const NeoHookeanTet& t = model_.neo_hookean[c];
+    const auto& id = t.particles;
+    const Mat3 F = edge_matrix(position(x, id[0]), position(x, id[1]), position(x, id[2]),
+                               position(x, id[3])) * t.Dm_inv;
+    add(neo_hookean_deviatoric_value(F), t.compliance_deviatoric(), lambda_neo_hookean_[c][0]);
+    add(neo_hookean_hydrostatic_value(F, neo_hookean_gamma(t.mu, t.lambda)),
+        t.compliance_hydrostatic(), lambda_neo_hookean_[c][1]);
+  }
+  for (size_t a = 0; a < model_.attachments.size(); ++a) {
+    const Attachment& attachment = model_.attachments[a];
+    const Vec3 r = (position(x, attachment.particle) - attachment.target) +
+                   attachment.compliance / (h * h) * lambda_attachment_[a];
+    residual2 += r.squaredNorm();
+  }
+  StepDiagnostics d;
+  d.step = step_;
+  d.constraint_residual = std::sqrt(residual2);
+  d.kinetic_energy = kinetic_energy(model_.particles);
+  d.gravitational_energy = gravitational_energy(model_);
+  d.elastic_energy = elastic_energy(model_);
+  d.max_speed = max_speed(model_.particles);
+  return d;
+}
+
+}  // namespace rice::xpbd

@@ -1,0 +1,100 @@
+// The XPBD time stepper (Macklin, Müller & Chentanez 2016) with substepping (Macklin et al.
+// 2019, "Small Steps in Physics Simulation"): each step of length Δt is split into N substeps
+// of h = Δt/N; each substep predicts x̃ = x + h v + h² M⁻¹ f_ext, resets λ, runs K Gauss–Seidel
+// iterations over all constraints, and sets v = (x − xⁿ)/h. Constraint kernels are stateless
+// (distance_constraint.hpp, tet_volume_constraint.hpp, neo_hookean_constraints.hpp); this
+// class owns the bookkeeping: multipliers, colouring, diagnostics.
+//
+// The solver keeps a reference to the model and colours its constraints once, at
+// construction: build a new solver after adding or removing constraints.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "xpbd/graph_coloring.hpp"
+#include "xpbd/model.hpp"
+
+namespace rice::xpbd {
+
+enum class Method {
+  kXpbd,  ///< compliant constraints, λ accumulated over a substep (XPBD eq. 18, 26)
+  kPbd,   ///< classic PBD: stiffness k ∈ [0, 1] per projection, no λ; kept to show what XPBD fixes
+};
+
+enum class Execution {
+  kSerial,    ///< plain Gauss–Seidel in constraint index order
+  kParallel,  ///< Gauss–Seidel colour by colour, each colour in parallel (TBB)
+};
+
+struct SolverSettings {
+  double time_step = 1.0 / 60.0;  ///< Δt of one step() [s]
+  int substeps = 1;               ///< N
+  int iterations = 10;            ///< K per substep
+  Method method = Method::kXpbd;
+  Execution execution = Execution::kParallel;
+  double pbd_stiffness = 1.0;     ///< k ∈ [0, 1], used by Method::kPbd only
+  bool diagnostics = false;       ///< compute StepDiagnostics after every step (costs one pass)
+};
+
+/// Figures of the state at the end of a step.
+struct StepDiagnostics {
+  long step = 0;                      ///< index of the step these figures describe
+  double constraint_residual = 0.0;   ///< ‖C + α̃λ‖₂ over the equality constraints
+  double kinetic_energy = 0.0;
+  double gravitational_energy = 0.0;
+  double elastic_energy = 0.0;
+  double max_speed = 0.0;
+  double total_energy() const { return kinetic_energy + gravitational_energy + elastic_energy; }
+};
+
+/// A non-finite number met during a step; the message names the step and the constraint.
+class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class Solver {
+ public:
+  /// Throws std::invalid_argument for settings out of range or a method the model cannot use.
+  Solver(Model& model, const SolverSettings& settings);
+
+  /// Advances the model by settings().time_step. Throws SimulationError on NaN or infinity.
+  void step();
+
+  const SolverSettings& settings() const { return settings_; }
+  long steps_taken() const { return step_; }
+  /// Figures of the last step; computed only when settings().diagnostics is on.
+  const StepDiagnostics& diagnostics() const { return diagnostics_; }
+  /// Number of colours per constraint set (Neo-Hookean, volume, distance), for reports.
+  std::vector<int> color_counts() const;
+
+ private:
+  void substep(double h);
+  void predict(double h);
+  void iterate(double h);
+  void project_distance(int c, double h);
+  void project_volume(int c, double h);
+  void project_neo_hookean(int c, double h);
+  void project_attachments(double h);
+  void project_ground();
+  void check_positions() const;
+  template <class Project>
+  void for_each_constraint(const Coloring& coloring, Project&& project);
+  [[noreturn]] void fail(const char* constraint_type, int index) const;
+  StepDiagnostics measure(double h) const;
+
+  Model& model_;
+  SolverSettings settings_;
+  Positions x_previous_;  ///< xⁿ, positions at the start of the substep
+  std::vector<double> lambda_distance_, lambda_volume_;
+  std::vector<Vec2> lambda_neo_hookean_;  ///< (λ_D, λ_H) per tet
+  std::vector<Vec3> lambda_attachment_;
+  Coloring coloring_distance_, coloring_volume_, coloring_neo_hookean_;
+  long step_ = 0;
+  int substep_ = 0;
+  StepDiagnostics diagnostics_;
+};
+
+}  // namespace rice::xpbd
