@@ -48,7 +48,7 @@ inline Vec2 damped_delta_lambda_pair(const Vec2& C, const Vec2& lambda,
                  -C[1] - s1.alpha_tilde * lambda[1] - s1.gamma * grad_dot_dx[1]);
   const double det = A(0, 0) * A(1, 1) - A(0, 1) * A(1, 0);
   const double scale = std::abs(A(0, 0) * A(1, 1)) + std::abs(A(0, 1) * A(1, 0));
-  if (!(std::abs(det) > 1e-12 * scale)) {
+  if (std::abs(det) <= 1e-12 * scale) {  // false for NaN, which then reaches the caller
     return Vec2(0.0, A(1, 1) > 0.0 ? rhs[1] / A(1, 1) : 0.0);
   }
   return Vec2((A(1, 1) * rhs[0] - A(0, 1) * rhs[1]) / det,

@@ -55,10 +55,13 @@ struct Attachment {
   double compliance;
 };
 
-/// Inequality constraint C = n·x − d ≥ 0 for every particle (frictionless, rigid).
+/// Inequality constraint C = n·x − d ≥ 0 for every particle (rigid), with Coulomb friction
+/// applied to positions (Macklin et al. 2014, "Unified Particle Physics", eq. 24).
 struct GroundPlane {
   Vec3 normal{0.0, 0.0, 1.0};
   double offset = 0.0;
+  double static_friction = 0.0;   ///< μ_s: tangential motion under μ_s·depth is removed
+  double dynamic_friction = 0.0;  ///< μ_k: otherwise it shrinks by μ_k·depth
 };
 
 struct Model {

@@ -5,6 +5,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "xpbd/damped_update.hpp"
@@ -231,14 +232,24 @@ void Solver::project_attachments(double h) {
 }
 
 void Solver::project_ground() {
-  // C = n·x − d ≥ 0 with α = 0: a particle below the plane moves back onto it along n.
+  // C = n·x − d ≥ 0 with α = 0: a particle below the plane moves back onto it along n; then
+  // friction removes (static) or shortens (dynamic) its tangential motion over the substep in
+  // proportion to the penetration depth (Macklin et al. 2014, eq. 24).
   const GroundPlane& ground = *model_.ground;
   Particles& p = model_.particles;
   for (int i = 0; i < p.size(); ++i) {
     if (p.w[i] == 0.0) continue;
     auto xi = position(p.x, i);
-    const double C = ground.normal.dot(xi) - ground.offset;
-    if (C < 0.0) xi -= C * ground.normal;
+    const double depth = ground.offset - ground.normal.dot(xi);
+    if (depth <= 0.0) continue;
+    xi += depth * ground.normal;
+    const Vec3 dx = xi - position(x_previous_, i);
+    const Vec3 tangential = dx - ground.normal.dot(dx) * ground.normal;
+    const double slip = tangential.norm();
+    if (slip < ground.static_friction * depth)
+      xi -= tangential;
+    else if (slip > 0.0)
+      xi -= tangential * std::min(ground.dynamic_friction * depth / slip, 1.0);
   }
 }
 

@@ -1,0 +1,42 @@
+// Small models shared by the XPBD solver tests: an elastic block and a cantilever.
+#pragma once
+
+#include <Eigen/Geometry>
+
+#include "xpbd/model.hpp"
+
+namespace rice::xpbd::testing {
+
+/// A Neo-Hookean block [0, size]³ of n³ cubes (6 tets each), gravity off unless asked.
+inline Model neo_hookean_block(double size, int n, double young = 1e5, double poisson = 0.3,
+                               double rayleigh_time = 0.0, double density = 1000.0) {
+  const TetMesh mesh = make_box_tet_mesh(Vec3::Constant(size), n, n, n);
+  Model model;
+  model.particles = make_particles(mesh, density);
+  add_neo_hookean_tets(model, mesh, lame_from_young_poisson(young, poisson), rayleigh_time);
+  model.gravity.setZero();
+  return model;
+}
+
+/// A cantilever of length 1 m and section 0.1 m × 0.1 m along x, clamped at x = 0, under
+/// gravity, Neo-Hookean. Returns the model; `tip` receives a vertex on the free end's axis.
+inline Model neo_hookean_cantilever(int nx, double young, double rayleigh_time, int* tip = nullptr) {
+  const int n = 2;
+  const TetMesh mesh = make_box_tet_mesh(Vec3(1.0, 0.1, 0.1), nx, n, n);
+  Model model;
+  model.particles = make_particles(mesh, 1000.0);
+  add_neo_hookean_tets(model, mesh, lame_from_young_poisson(young, 0.3), rayleigh_time);
+  std::vector<int> clamped;
+  for (int i = 0; i < mesh.V.rows(); ++i)
+    if (mesh.V(i, 0) == 0.0) clamped.push_back(i);
+  pin_particles(model, clamped);
+  if (tip) *tip = nx + (nx + 1) * (1 + (n + 1) * 1);  // vertex (nx, 1, 1)
+  return model;
+}
+
+/// Rotates every particle of the model about the origin.
+inline void rotate(Model& model, const Mat3& R) {
+  model.particles.x = (model.particles.x * R.transpose()).eval();
+}
+
+}  // namespace rice::xpbd::testing
