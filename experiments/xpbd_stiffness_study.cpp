@@ -115,9 +115,9 @@ void stiffness_study_command(const StiffnessStudySettings& settings, const std::
   render_plot(folder, "stiffness", R"(set terminal pngcairo size 900,600
 set output 'stiffness.png'
 set datafile separator ','
-set logscale x
+set logscale xy
 set xlabel 'iterations per substep K'
-set ylabel 'rest tip deflection [mm]'
+set ylabel 'rest tip deflection [mm] (log)'
 set title 'Cantilever under gravity: XPBD stiffness does not depend on K, PBD stiffness does'
 set key left top
 plot for [m in "xpbd-neo-hookean xpbd-springs pbd-springs"] 'stiffness.csv' \
