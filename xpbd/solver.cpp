@@ -57,10 +57,6 @@ Solver::Solver(Model& model, const SolverSettings& settings) : model_(model), se
   coloring_neo_hookean_ = color_constraints<4>(model.neo_hookean, p.size());
 }
 
-std::vector<int> Solver::color_counts() const {
-  return {coloring_neo_hookean_.colors(), coloring_volume_.colors(), coloring_distance_.colors()};
-}
-
 void Solver::step() {
   const double h = settings_.time_step / settings_.substeps;
   for (substep_ = 0; substep_ < settings_.substeps; ++substep_) substep(h);

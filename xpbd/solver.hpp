@@ -67,8 +67,6 @@ class Solver {
   long steps_taken() const { return step_; }
   /// Figures of the last step; computed only when settings().diagnostics is on.
   const StepDiagnostics& diagnostics() const { return diagnostics_; }
-  /// Number of colours per constraint set (Neo-Hookean, volume, distance), for reports.
-  std::vector<int> color_counts() const;
 
  private:
   void substep(double h);

@@ -35,29 +35,29 @@ double max_relative_stretch(const Model& model) {
   return worst;
 }
 
-TEST(HardCases, RigidChainKeepsItsLengthAndLosesEnergy) {
-  Model model = chain(10, 0.0, 1.0);
-  Solver solver(model, {.time_step = 1.0 / 60, .substeps = 10, .iterations = 5, .diagnostics = true});
+/// Swings the chain for three seconds; positions stay finite and the energy never exceeds its
+/// value after the first step (gravity's potential is counted, nothing else does work).
+void swing_and_check(Model& model, int substeps, int iterations) {
+  Solver solver(model, {.time_step = 1.0 / 60, .substeps = substeps, .iterations = iterations,
+                        .diagnostics = true});
   solver.step();
   const double initial = solver.diagnostics().total_energy();
   for (int s = 0; s < 180; ++s) {
     solver.step();
-    ASSERT_TRUE(model.particles.x.allFinite());
-    EXPECT_LE(solver.diagnostics().total_energy(), initial + 1e-9 * std::abs(initial));
+    ASSERT_TRUE(model.particles.x.allFinite()) << "step " << s;
+    EXPECT_LE(solver.diagnostics().total_energy(), initial + 1e-9 * std::abs(initial)) << "step " << s;
   }
+}
+
+TEST(HardCases, RigidChainKeepsItsLengthAndLosesEnergy) {
+  Model model = chain(10, 0.0, 1.0);
+  swing_and_check(model, 10, 5);
   EXPECT_LT(max_relative_stretch(model), 5e-3);  // five iterations: not fully converged
 }
 
 TEST(HardCases, MassRatioOneToTenThousandStaysFiniteAndBounded) {
   Model model = chain(10, 0.0, 1e4);
-  Solver solver(model, {.time_step = 1.0 / 60, .substeps = 20, .iterations = 10, .diagnostics = true});
-  solver.step();
-  const double initial = solver.diagnostics().total_energy();
-  for (int s = 0; s < 180; ++s) {
-    solver.step();
-    ASSERT_TRUE(model.particles.x.allFinite());
-    EXPECT_LE(solver.diagnostics().total_energy(), initial + 1e-9 * std::abs(initial));
-  }
+  swing_and_check(model, 20, 10);
   // Gauss–Seidel converges slowly when one mass dominates: the chain stretches, but boundedly.
   EXPECT_LT(max_relative_stretch(model), 0.5);
 }
