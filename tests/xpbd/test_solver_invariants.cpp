@@ -94,6 +94,21 @@ TEST(Pins, PinnedParticlesDoNotMove) {
   EXPECT_LT(model.particles.x(tip, 2), start(tip, 2) - 0.01) << "the free end should sag";
 }
 
+TEST(Attachments, CompliantAttachmentSagsByMassTimesGravityTimesCompliance) {
+  // Static balance of C = x − p with compliance α under gravity: x − p = α m g.
+  for (const double compliance : {0.0, 1e-4}) {
+    Model model;
+    model.particles.x = Positions::Zero(1, 3);
+    model.particles.v = Positions::Zero(1, 3);
+    model.particles.w = Eigen::VectorXd::Constant(1, 1.0 / 0.5);
+    model.attachments.push_back({0, Vec3(0.1, 0.2, 0.3), compliance});
+    Solver solver(model, {.time_step = 1.0 / 60, .substeps = 1, .iterations = 1});
+    for (int s = 0; s < 120; ++s) solver.step();
+    const Vec3 expected = Vec3(0.1, 0.2, 0.3) + compliance * 0.5 * model.gravity;
+    EXPECT_LT((model.particles.x.row(0).transpose() - expected).norm(), 1e-12) << "alpha " << compliance;
+  }
+}
+
 TEST(Ground, BodyAtRestOnTheGroundDoesNotDrift) {
   Model model = neo_hookean_block(0.05, 2, 1e5, 0.3, 1e-3);
   model.gravity = Vec3(0.0, 0.0, -9.81);
