@@ -35,11 +35,8 @@ Cantilever make_cantilever(const StiffnessStudySettings& s, const std::string& m
     add_edge_springs(c.model, mesh, s.young);
     add_tet_volumes(c.model, mesh, s.young / (3.0 * (1.0 - 2.0 * s.poisson)));
   }
-  std::vector<int> clamped;
-  for (int i = 0; i < mesh.V.rows(); ++i)
-    if (mesh.V(i, 0) == 0.0) clamped.push_back(i);
-  pin_particles(c.model, clamped);
-  c.tip = s.cells_along + (s.cells_along + 1) * (1 + 3 * 1);  // vertex (nx, 1, 1)
+  pin_particles(c.model, vertices_at_min_x(mesh.V));
+  c.tip = box_vertex_index(s.cells_along, 2, s.cells_along, 1, 1);
   return c;
 }
 

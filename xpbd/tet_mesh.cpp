@@ -16,7 +16,7 @@ TetMesh make_box_tet_mesh(const Vec3& size, int nx, int ny, int nz) {
                                 std::to_string(nx) + "x" + std::to_string(ny) + "x" +
                                 std::to_string(nz));
   }
-  const auto index = [&](int i, int j, int k) { return i + (nx + 1) * (j + (ny + 1) * k); };
+  const auto index = [&](int i, int j, int k) { return box_vertex_index(nx, ny, i, j, k); };
   TetMesh mesh;
   mesh.V.resize((nx + 1) * (ny + 1) * (nz + 1), 3);
   for (int k = 0; k <= nz; ++k)
@@ -46,6 +46,14 @@ TetMesh make_box_tet_mesh(const Vec3& size, int nx, int ny, int nz) {
         }
       }
   return mesh;
+}
+
+std::vector<int> vertices_at_min_x(const Positions& V) {
+  std::vector<int> indices;
+  const double min_x = V.col(0).minCoeff();
+  for (int i = 0; i < V.rows(); ++i)
+    if (V(i, 0) == min_x) indices.push_back(i);
+  return indices;
 }
 
 Eigen::VectorXd tet_volumes(const Positions& V, const Tets& T) {

@@ -3,6 +3,8 @@
 // types.hpp; nothing here knows about the solver.
 #pragma once
 
+#include <vector>
+
 #include "xpbd/types.hpp"
 
 namespace rice::xpbd {
@@ -16,6 +18,14 @@ struct TetMesh {
 /// around its main diagonal (Kuhn/Freudenthal subdivision, conforming across faces).
 /// Vertex (i, j, k) has index i + (nx+1) (j + (ny+1) k).
 TetMesh make_box_tet_mesh(const Vec3& size, int nx, int ny, int nz);
+
+/// Index of vertex (i, j, k) of make_box_tet_mesh(size, nx, ny, nz).
+inline int box_vertex_index(int nx, int ny, int i, int j, int k) {
+  return i + (nx + 1) * (j + (ny + 1) * k);
+}
+
+/// Vertices lying on the plane x = min x of the mesh (the clamped end of a cantilever).
+std::vector<int> vertices_at_min_x(const Positions& V);
 
 /// Positions of tetrahedron t as one 12-vector.
 inline Vec12 tet_positions(const Positions& V, const Tets& T, int t) {

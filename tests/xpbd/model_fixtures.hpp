@@ -26,11 +26,8 @@ inline Model neo_hookean_cantilever(int nx, double young, double rayleigh_time, 
   Model model;
   model.particles = make_particles(mesh, 1000.0);
   add_neo_hookean_tets(model, mesh, lame_from_young_poisson(young, 0.3), rayleigh_time);
-  std::vector<int> clamped;
-  for (int i = 0; i < mesh.V.rows(); ++i)
-    if (mesh.V(i, 0) == 0.0) clamped.push_back(i);
-  pin_particles(model, clamped);
-  if (tip) *tip = nx + (nx + 1) * (1 + (n + 1) * 1);  // vertex (nx, 1, 1)
+  pin_particles(model, vertices_at_min_x(mesh.V));
+  if (tip) *tip = box_vertex_index(nx, n, nx, 1, 1);
   return model;
 }
 
