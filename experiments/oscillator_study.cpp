@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "experiments/output.hpp"
+#include "fem_reference/implicit_solver.hpp"
 #include "xpbd/solver.hpp"
 
 namespace rice::experiments {
@@ -43,7 +44,12 @@ OscillationMeasurement measure_oscillation(const std::vector<double>& t, const s
   return m;
 }
 
-OscillationMeasurement simulate_oscillator(const OscillatorSettings& s, int substeps, double damping) {
+const char* integrator_name(Integrator integrator) {
+  return integrator == Integrator::kXpbd ? "xpbd" : "reference";
+}
+
+OscillationMeasurement simulate_oscillator(const OscillatorSettings& s, int substeps, double damping,
+                                           Integrator integrator, std::vector<double>* trajectory) {
   using namespace rice::xpbd;
   Model model;
   model.gravity.setZero();
@@ -54,14 +60,17 @@ OscillationMeasurement simulate_oscillator(const OscillatorSettings& s, int subs
   model.distances.push_back({{0, 1}, s.rest_length, 1.0 / s.stiffness, damping});
   const double h = s.frame / substeps;
   // One solver step per substep, so that every substep is sampled.
-  Solver solver(model, {.time_step = h, .substeps = 1, .iterations = 1, .execution = Execution::kSerial});
+  Solver xpbd(model, {.time_step = h, .substeps = 1, .iterations = 1, .execution = Execution::kSerial});
+  fem::ImplicitSolver reference(model, {.time_step = h, .newton = {.tolerance = 1e-12}});
   const int steps = static_cast<int>(std::round(s.duration / h));
   std::vector<double> t{0.0}, x{s.amplitude};
   for (int k = 1; k <= steps; ++k) {
-    solver.step();
+    if (integrator == Integrator::kXpbd) xpbd.step();
+    else reference.step();
     t.push_back(k * h);
     x.push_back(model.particles.x(1, 0) - s.rest_length);
   }
+  if (trajectory) *trajectory = x;
   return measure_oscillation(t, x);
 }
 
@@ -75,22 +84,24 @@ OscillationMeasurement analytic_oscillator(const OscillatorSettings& s, double d
 void oscillator_study_command(const OscillatorSettings& settings, const std::filesystem::path& folder) {
   make_output_folder(folder);
   const auto start = std::chrono::steady_clock::now();
-  CsvTable table({"damping_ns_per_m", "substeps_per_frame", "substep_s", "period_s", "period_exact_s",
+  CsvTable table({"solver", "damping_ns_per_m", "substeps_per_frame", "substep_s", "period_s", "period_exact_s",
                   "period_rel_error", "decay_per_s", "decay_exact_per_s", "decay_abs_error_per_s",
                   "wall_s_per_sim_s"});
-  std::printf("%10s %9s %12s %12s %12s %12s %14s\n", "beta", "substeps", "period [s]", "exact",
+  std::printf("%10s %10s %9s %12s %12s %12s %12s %14s\n", "solver", "beta", "substeps", "period [s]", "exact",
               "decay [1/s]", "exact", "wall/sim time");
-  for (const double damping : {0.0, settings.damping}) {
+  for (const Integrator integrator : {Integrator::kXpbd, Integrator::kReference}) {
+    for (const double damping : {0.0, settings.damping}) {
     const OscillationMeasurement exact = analytic_oscillator(settings, damping);
     for (const int n : settings.substeps) {
       const auto run_start = std::chrono::steady_clock::now();
-      const OscillationMeasurement m = simulate_oscillator(settings, n, damping);
+      const OscillationMeasurement m = simulate_oscillator(settings, n, damping, integrator);
       const double cost = seconds_since(run_start) / settings.duration;
-      table.add_row({cell(damping), cell(n), cell(settings.frame / n), cell(m.period), cell(exact.period),
+      table.add_row({integrator_name(integrator), cell(damping), cell(n), cell(settings.frame / n), cell(m.period), cell(exact.period),
                      cell(std::abs(m.period - exact.period) / exact.period), cell(m.decay_rate),
                      cell(exact.decay_rate), cell(std::abs(m.decay_rate - exact.decay_rate)), cell(cost)});
-      std::printf("%10.3g %9d %12.6f %12.6f %12.5f %12.5f %14.3e\n", damping, n, m.period, exact.period,
+      std::printf("%10s %10.3g %9d %12.6f %12.6f %12.5f %12.5f %14.3e\n", integrator_name(integrator), damping, n, m.period, exact.period,
                   m.decay_rate, exact.decay_rate, cost);
+      }
     }
   }
   write_text_atomically(folder / "oscillator.csv", table.text());
@@ -102,13 +113,19 @@ set logscale xy
 set xlabel 'wall time per simulated second [s]'
 set key bottom left
 set ylabel 'decay-rate error [1/s]'
-set title 'Spring-mass: XPBD decay vs analytic (substeps 1..128 per frame)'
-plot 'oscillator.csv' using ($1==0 ? $10 : 1/0):9 with linespoints title 'beta = 0', \
-     '' using ($1>0 ? $10 : 1/0):9 with linespoints title 'beta > 0'
+xpbd(b) = (strcol(1) eq 'xpbd' && (b ? $2 > 0 : $2 == 0))
+reference(b) = (strcol(1) eq 'reference' && (b ? $2 > 0 : $2 == 0))
+set title 'Spring-mass: decay vs analytic (substeps 1..128 per frame)'
+plot 'oscillator.csv' using (xpbd(0) ? $11 : 1/0):10 with linespoints title 'XPBD, beta = 0', \
+     '' using (xpbd(1) ? $11 : 1/0):10 with linespoints title 'XPBD, beta > 0', \
+     '' using (reference(0) ? $11 : 1/0):10 with points pt 6 ps 1.5 title 'reference, beta = 0', \
+     '' using (reference(1) ? $11 : 1/0):10 with points pt 6 ps 1.5 title 'reference, beta > 0'
 set ylabel 'relative period error'
 set title 'Period vs analytic'
-plot 'oscillator.csv' using ($1==0 ? $10 : 1/0):6 with linespoints title 'beta = 0', \
-     '' using ($1>0 ? $10 : 1/0):6 with linespoints title 'beta > 0'
+plot 'oscillator.csv' using (xpbd(0) ? $11 : 1/0):7 with linespoints title 'XPBD, beta = 0', \
+     '' using (xpbd(1) ? $11 : 1/0):7 with linespoints title 'XPBD, beta > 0', \
+     '' using (reference(0) ? $11 : 1/0):7 with points pt 6 ps 1.5 title 'reference, beta = 0', \
+     '' using (reference(1) ? $11 : 1/0):7 with points pt 6 ps 1.5 title 'reference, beta > 0'
 unset multiplot
 )");
   write_text_atomically(folder / "run_info.txt",

@@ -3,6 +3,8 @@
 //   ω0 = sqrt(k/m), ζ = β / (2 sqrt(k m)), period T = 2π / (ω0 sqrt(1 − ζ²)), decay rate ζ ω0.
 // The number of substeps per 1/60 s frame is swept, so the output is an error-versus-time
 // curve: XPBD behaves like backward Euler, whose numerical damping h ω0²/2 shrinks with h.
+// The reference solver (fem_reference/, backward Euler by Newton) runs the same sweep: on this
+// linear problem the two must agree to round-off.
 #pragma once
 
 #include <filesystem>
@@ -29,8 +31,14 @@ struct OscillationMeasurement {
 /// Period and decay rate of a sampled oscillation x(t) around 0 (at least two periods).
 OscillationMeasurement measure_oscillation(const std::vector<double>& t, const std::vector<double>& x);
 
-/// Simulates the oscillator at h = frame / substeps and measures it.
-OscillationMeasurement simulate_oscillator(const OscillatorSettings& settings, int substeps, double damping);
+enum class Integrator { kXpbd, kReference };
+const char* integrator_name(Integrator integrator);
+
+/// Simulates the oscillator at h = frame / substeps and measures it. `trajectory`, when
+/// given, receives the particle's stretch after every step.
+OscillationMeasurement simulate_oscillator(const OscillatorSettings& settings, int substeps, double damping,
+                                           Integrator integrator = Integrator::kXpbd,
+                                           std::vector<double>* trajectory = nullptr);
 
 /// Analytic period and decay rate for the given damping β.
 OscillationMeasurement analytic_oscillator(const OscillatorSettings& settings, double damping);

@@ -26,6 +26,31 @@ TEST(SpringOscillator, PeriodAndDecayMatchTheAnalyticOscillator) {
   }
 }
 
+TEST(SpringOscillator, ReferenceSolverMatchesTheAnalyticOscillatorAndXpbd) {
+  // The reference's Rayleigh potential β/(2h)(C − Cⁿ)² equals XPBD's damping for a spring
+  // moving along its axis, and one XPBD iteration solves a single linear constraint exactly:
+  // both are the same backward-Euler map here, so they agree to round-off.
+  const OscillatorSettings settings;
+  const double omega0 = std::sqrt(settings.stiffness / settings.mass);
+  for (const double damping : {0.0, 0.5}) {
+    const OscillationMeasurement exact = analytic_oscillator(settings, damping);
+    for (const int substeps : {16, 64}) {
+      const double h = settings.frame / substeps;
+      std::vector<double> xpbd, reference;
+      simulate_oscillator(settings, substeps, damping, Integrator::kXpbd, &xpbd);
+      const OscillationMeasurement m =
+          simulate_oscillator(settings, substeps, damping, Integrator::kReference, &reference);
+      EXPECT_NEAR(m.period, exact.period, 1.5e-3 * exact.period) << "beta " << damping << ", N " << substeps;
+      EXPECT_NEAR(m.decay_rate, exact.decay_rate + 0.5 * h * omega0 * omega0, 0.02 * exact.decay_rate + 1e-3)
+          << "beta " << damping << ", N " << substeps;
+      ASSERT_EQ(xpbd.size(), reference.size());
+      double difference = 0.0;
+      for (size_t k = 0; k < xpbd.size(); ++k) difference = std::max(difference, std::abs(xpbd[k] - reference[k]));
+      EXPECT_LT(difference, 1e-9 * settings.amplitude) << "beta " << damping << ", N " << substeps;
+    }
+  }
+}
+
 TEST(SpringOscillator, DecayErrorIsFirstOrderInTheSubstep) {
   const OscillatorSettings settings;
   const OscillationMeasurement exact = analytic_oscillator(settings, settings.damping);

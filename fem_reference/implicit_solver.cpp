@@ -1,0 +1,118 @@
+// Backward Euler and quasi-static solves of the shared model; see implicit_solver.hpp.
+#include "fem_reference/implicit_solver.hpp"
+
+#include <string>
+
+#include "xpbd/solver.hpp"
+
+namespace rice::fem {
+namespace {
+
+template <class Form>
+void append_if_used(std::vector<WeightedForm>& forms, const Form* form, double weight) {
+  if (form && form->element_count() > 0) forms.push_back({form, weight});
+}
+
+}  // namespace
+
+ImplicitSolver::ImplicitSolver(xpbd::Model& model, const ImplicitSettings& settings)
+    : model_(model), settings_(settings), inertia_(model.particles.w), loads_(model) {
+  const xpbd::Particles& p = model.particles;
+  if (p.v.rows() != p.x.rows() || p.w.size() != p.x.rows())
+    throw std::invalid_argument("reference solver: particles have " + std::to_string(p.x.rows()) +
+                                " positions, " + std::to_string(p.v.rows()) + " velocities, " +
+                                std::to_string(p.w.size()) + " inverse masses");
+  if (!(settings.time_step > 0.0))
+    throw std::invalid_argument("reference solver: time_step must be > 0");
+  if (model.ground)
+    throw std::invalid_argument("reference solver: it has no contact; remove the ground plane "
+                                "(the validation scenes need none)");
+  fixed_.resize(p.size());
+  for (int i = 0; i < p.size(); ++i) fixed_[i] = !(p.w[i] > 0.0);
+  for (const xpbd::Attachment& a : model.attachments) {
+    if (a.particle < 0 || a.particle >= p.size())
+      throw std::invalid_argument("reference solver: attachment names particle " +
+                                  std::to_string(a.particle));
+    if (a.compliance == 0.0) fixed_[a.particle] = true;  // a Dirichlet condition
+    else compliant_attachments_.push_back(a);
+  }
+  hold_rigid_attachments();
+
+  // Weights of eq. (1); forms without elements are left out, so unused effects cost nothing.
+  const double h = settings.time_step;
+  std::vector<WeightedForm> dynamic{{&inertia_, 1.0}}, quasi_static;
+  append_if_used(dynamic, &loads_, h * h);
+  append_if_used(quasi_static, &loads_, 1.0);
+  const auto add_elastic = [&](auto form) {
+    if (form->element_count() == 0) return;
+    dynamic.push_back({form.get(), h * h});
+    quasi_static.push_back({form.get(), 1.0});
+    elastic_.push_back(std::move(form));
+  };
+  add_elastic(make_elastic_form<NeoHookeanKernel>("neo-hookean", model.neo_hookean));
+  add_elastic(make_elastic_form<TetVolumeKernel>("tet volume", model.volumes));
+  add_elastic(make_elastic_form<DistanceKernel>("distance", model.distances));
+  add_elastic(make_elastic_form<AttachmentKernel>("attachment", compliant_attachments_));
+  damping_neo_hookean_ = make_damping_form<NeoHookeanKernel>("neo-hookean", model.neo_hookean, h);
+  damping_volume_ = make_damping_form<TetVolumeKernel>("tet volume", model.volumes, h);
+  damping_distance_ = make_damping_form<DistanceKernel>("distance", model.distances, h);
+  append_if_used(dynamic, damping_neo_hookean_.get(), h * h);
+  append_if_used(dynamic, damping_volume_.get(), h * h);
+  append_if_used(dynamic, damping_distance_.get(), h * h);
+  dynamic_ = std::make_unique<NewtonSolver>(dynamic, fixed_, settings.newton);
+  static_ = std::make_unique<NewtonSolver>(quasi_static, fixed_, settings.newton);
+}
+
+ImplicitSolver::~ImplicitSolver() = default;
+
+void ImplicitSolver::hold_rigid_attachments() {
+  for (const xpbd::Attachment& a : model_.attachments)
+    if (a.compliance == 0.0) model_.particles.x.row(a.particle) = a.target.transpose();
+}
+
+void ImplicitSolver::step() {
+  const double h = settings_.time_step;
+  xpbd::Particles& p = model_.particles;
+  hold_rigid_attachments();
+  const Positions x_start = p.x;
+  Positions x_hat = p.x;
+  for (int i = 0; i < p.size(); ++i)
+    if (!fixed_[i]) x_hat.row(i) += h * p.v.row(i);
+  inertia_.set_target(x_hat);
+  damping_neo_hookean_->set_targets(x_start);
+  damping_volume_->set_targets(x_start);
+  damping_distance_->set_targets(x_start);
+
+  // Start from XPBD's prediction x̃ = x̂ + h² M⁻¹ f.
+  const bool has_forces = model_.external_forces.rows() != 0;
+  p.x = x_hat;
+  for (int i = 0; i < p.size(); ++i) {
+    if (fixed_[i]) continue;
+    xpbd::Vec3 a = model_.gravity;
+    if (has_forces) a += p.w[i] * model_.external_forces.row(i).transpose();
+    p.x.row(i) += h * h * a.transpose();
+  }
+  report_ = dynamic_->minimize(p.x);
+  check("step");
+  p.v = (p.x - x_start) / h;
+  for (int i = 0; i < p.size(); ++i)
+    if (fixed_[i]) p.v.row(i).setZero();
+  ++step_;
+}
+
+NewtonReport ImplicitSolver::solve_static() {
+  hold_rigid_attachments();
+  report_ = static_->minimize(model_.particles.x);
+  check("static solve");
+  model_.particles.v.setZero();
+  return report_;
+}
+
+void ImplicitSolver::check(const char* what) const {
+  if (!model_.particles.x.allFinite())
+    throw xpbd::SimulationError("reference solver, " + std::string(what) + " " +
+                                std::to_string(step_) + ": Newton ended on non-finite positions "
+                                "(after " + std::to_string(report_.iterations) + " iterations)");
+}
+
+}  // namespace rice::fem

@@ -1,0 +1,179 @@
+// One finite-difference harness for every term of the reference solver's energy (issue 3,
+// §2): value → gradient and gradient → Hessian by central differences at random,
+// near-degenerate and inverted states, and the per-element PSD projection.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <random>
+
+#include "fem_reference/constraint_potential_form.hpp"
+#include "fem_reference/inertia_form.hpp"
+#include "fem_reference/load_form.hpp"
+#include "tests/common/finite_differences.hpp"
+#include "tests/common/jittered_mesh.hpp"
+#include "xpbd/energy.hpp"
+
+namespace rice::fem {
+namespace {
+
+using testing::fd_gradient;
+using testing::fd_jacobian;
+using testing::relative_error;
+
+// Central differences with a step of 1e-6 of the body size: truncation ~1e-12, round-off
+// ~1e-10 relative, so 1e-6 separates right from wrong by orders of magnitude.
+constexpr double kStep = 1e-6;
+constexpr double kTolerance = 1e-6;
+
+Positions reshape(const Eigen::VectorXd& v) {
+  return Eigen::Map<const Positions>(v.data(), v.size() / 3, 3);
+}
+Eigen::VectorXd flatten(const Positions& x) {
+  return Eigen::Map<const Eigen::VectorXd>(x.data(), x.size());
+}
+
+Eigen::VectorXd gradient_of(const Form& form, const Positions& x) {
+  Positions g = Positions::Zero(x.rows(), 3);
+  form.add_gradient(x, 1.0, g);
+  return flatten(g);
+}
+
+Eigen::MatrixXd hessian_of(const Form& form, const Positions& x, bool project) {
+  const DofMap dofs(std::vector<bool>(x.rows(), false));
+  SparseHessian H(dofs, {form.stencils()});
+  form.add_hessian(x, 1.0, project, H);
+  return Eigen::MatrixXd(H.matrix());
+}
+
+/// Checks ∇value and ∇²value of `form` at x against central differences, and that the
+/// projected Hessian is PSD and equals the exact one where that is already PSD.
+void check_form(const Form& form, const Positions& x, double scale) {
+  SCOPED_TRACE(form.name());
+  const Eigen::VectorXd x0 = flatten(x);
+  const double h = kStep * scale;
+  const Eigen::VectorXd g = gradient_of(form, x);
+  const Eigen::VectorXd g_fd = fd_gradient([&](const Eigen::VectorXd& v) { return form.value(reshape(v)); }, x0, h);
+  EXPECT_LT(relative_error(g, g_fd, 1e-12), kTolerance) << "gradient\n" << g.transpose() << "\nfd\n" << g_fd.transpose();
+
+  const Eigen::MatrixXd H = hessian_of(form, x, false);
+  const Eigen::MatrixXd H_fd = fd_jacobian([&](const Eigen::VectorXd& v) { return gradient_of(form, reshape(v)); }, x0, h);
+  EXPECT_LT(relative_error(H, H_fd, 1e-12), kTolerance) << "Hessian";
+  EXPECT_LT(relative_error(H, H.transpose(), 1e-12), 1e-12) << "Hessian not symmetric";
+
+  const Eigen::MatrixXd P = hessian_of(form, x, true);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(P);
+  EXPECT_GE(eigen.eigenvalues().minCoeff(), -1e-9 * std::max(1.0, P.norm())) << "projection not PSD";
+}
+
+/// A small irregular Neo-Hookean block (size 1 cm) with springs, volumes and attachments,
+/// all with damping.
+xpbd::Model make_model() {
+  const xpbd::TetMesh mesh = testing::jittered_box_mesh(xpbd::Vec3(0.02, 0.01, 0.01), 2, 1, 1, 0.0);
+  xpbd::Model model;
+  model.particles = xpbd::make_particles(mesh, 1000.0);
+  xpbd::add_neo_hookean_tets(model, mesh, xpbd::lame_from_young_poisson(1e5, 0.3), 0.01);
+  xpbd::add_edge_springs(model, mesh, 1e5, 0.01);
+  xpbd::add_tet_volumes(model, mesh, 1e5, 0.01);
+  model.attachments.push_back({0, xpbd::Vec3(0.001, -0.002, 0.0), 1e-4});
+  model.attachments.push_back({5, xpbd::Vec3(0.02, 0.01, 0.013), 2e-4});
+  model.external_forces = Positions::Constant(model.particles.size(), 3, 0.1);
+  return model;
+}
+
+/// The rest shape deformed by a random affine map plus per-vertex noise of `noise` metres.
+Positions deformed(const Positions& rest, double noise, unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  xpbd::Mat3 A = xpbd::Mat3::Identity();
+  for (int i = 0; i < 9; ++i) A.data()[i] += 0.2 * u(random);
+  Positions x = rest * A.transpose();
+  for (int i = 0; i < x.size(); ++i) x.data()[i] += noise * u(random);
+  return x;
+}
+
+class FormDerivatives : public ::testing::TestWithParam<const char*> {};
+
+/// Every form of the model, at the state named by the test parameter.
+void check_all_forms(const Positions& x, const Positions& x_start) {
+  xpbd::Model model = make_model();
+  const double h = 1e-3;
+  std::vector<std::unique_ptr<Form>> forms;
+  forms.push_back(make_elastic_form<NeoHookeanKernel>("neo-hookean", model.neo_hookean));
+  forms.push_back(make_elastic_form<TetVolumeKernel>("tet volume", model.volumes));
+  forms.push_back(make_elastic_form<DistanceKernel>("distance", model.distances));
+  forms.push_back(make_elastic_form<AttachmentKernel>("attachment", model.attachments));
+  auto damp_nh = make_damping_form<NeoHookeanKernel>("neo-hookean", model.neo_hookean, h);
+  auto damp_volume = make_damping_form<TetVolumeKernel>("tet volume", model.volumes, h);
+  auto damp_distance = make_damping_form<DistanceKernel>("distance", model.distances, h);
+  damp_nh->set_targets(x_start);
+  damp_volume->set_targets(x_start);
+  damp_distance->set_targets(x_start);
+  forms.push_back(std::move(damp_nh));
+  forms.push_back(std::move(damp_volume));
+  forms.push_back(std::move(damp_distance));
+  auto inertia = std::make_unique<InertiaForm>(model.particles.w);
+  inertia->set_target(x_start);
+  forms.push_back(std::move(inertia));
+  forms.push_back(std::make_unique<LoadForm>(model));
+  for (const auto& form : forms) check_form(*form, x, 0.01);
+}
+
+TEST(FormDerivatives, MatchFiniteDifferencesAtRandomStates) {
+  const xpbd::Model model = make_model();
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    SCOPED_TRACE(seed);
+    check_all_forms(deformed(model.particles.x, 1e-3, seed), deformed(model.particles.x, 1e-3, seed + 10));
+  }
+}
+
+TEST(FormDerivatives, MatchFiniteDifferencesNearDegenerateAndInverted) {
+  const xpbd::Model model = make_model();
+  // Every vertex squashed onto a layer 1e-3 of the height thick: nearly flat tets.
+  Positions flat = model.particles.x;
+  flat.col(2) *= 1e-3;
+  check_all_forms(flat, model.particles.x);
+  // Mirrored through the plane z = 0: every tet inverted (det F < 0).
+  Positions inverted = deformed(model.particles.x, 1e-4, 7);
+  inverted.col(2) *= -1.0;
+  check_all_forms(inverted, model.particles.x);
+}
+
+TEST(FormDerivatives, ElasticEnergyEqualsTheXpbdModelEnergy) {
+  // One energy, two solvers: the reference's U is the XPBD model's elastic_energy.
+  xpbd::Model model = make_model();
+  model.particles.x = deformed(model.particles.x, 1e-3, 3);
+  const double U = make_elastic_form<NeoHookeanKernel>("", model.neo_hookean)->value(model.particles.x) +
+                   make_elastic_form<TetVolumeKernel>("", model.volumes)->value(model.particles.x) +
+                   make_elastic_form<DistanceKernel>("", model.distances)->value(model.particles.x);
+  model.attachments.clear();
+  EXPECT_NEAR(U, xpbd::elastic_energy(model), 1e-12 * std::abs(U));
+  const Positions gradient_expected = xpbd::elastic_energy_gradient(model);
+  Positions gradient = Positions::Zero(model.particles.size(), 3);
+  make_elastic_form<NeoHookeanKernel>("", model.neo_hookean)->add_gradient(model.particles.x, 1.0, gradient);
+  make_elastic_form<TetVolumeKernel>("", model.volumes)->add_gradient(model.particles.x, 1.0, gradient);
+  make_elastic_form<DistanceKernel>("", model.distances)->add_gradient(model.particles.x, 1.0, gradient);
+  EXPECT_LT(relative_error(gradient, gradient_expected, 1e-12), 1e-12);
+}
+
+TEST(FormDerivatives, ProjectionLeavesAConvexHessianUnchanged) {
+  // At rest every elastic Hessian is PSD: projection must not alter it.
+  const xpbd::Model model = make_model();
+  const auto form = make_elastic_form<NeoHookeanKernel>("neo-hookean", model.neo_hookean);
+  const Eigen::MatrixXd exact = hessian_of(*form, model.particles.x, false);
+  const Eigen::MatrixXd projected = hessian_of(*form, model.particles.x, true);
+  EXPECT_LT(relative_error(exact, projected, 1e-12), 1e-10);
+}
+
+TEST(FormDerivatives, RigidConstraintIsRejectedWithItsIndex) {
+  xpbd::Model model = make_model();
+  model.distances[3].compliance = 0.0;
+  try {
+    make_elastic_form<DistanceKernel>("distance", model.distances);
+    FAIL() << "expected an error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("distance constraint 3"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace rice::fem
