@@ -12,6 +12,11 @@ using Clock = std::chrono::steady_clock;
 /// A Newton step shorter than this fraction of max |x| cannot change x in double precision
 /// beyond a few ulps: the solve has converged as far as round-off allows.
 constexpr double kRoundOff = 1e-14;
+
+/// Energy changes below this fraction of Σ|w_f form_f| are taken as round-off: an element's
+/// energy is often a difference of much larger terms (the Neo-Hookean rest energy), so the
+/// noise sits far above machine epsilon times |E|.
+constexpr double kEnergyRoundOff = 1e-8;
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
@@ -80,20 +85,28 @@ bool NewtonSolver::line_search(Positions& x, double energy0, const Eigen::Vector
                                const Eigen::VectorXd& d, NewtonReport& report) const {
   const auto start = Clock::now();
   const double slope = g.dot(d);  // < 0 for a descent direction
+  const double noise = kEnergyRoundOff * magnitude(x);
+  const double gradient_norm = g.norm();
   double step = 1.0;
   Positions trial = x;
-  for (int k = 0; k < settings_.max_backtracks; ++k, step *= 0.5) {
+  bool accepted = false;
+  for (int k = 0; k < settings_.max_backtracks && !accepted; ++k, step *= 0.5) {
     trial = x;
     dofs_.scatter_add(d, step, trial);
     const double e = energy(trial);
-    if (std::isfinite(e) && e <= energy0 + settings_.armijo * step * slope) {
-      x = trial;
-      report.seconds.line_search += seconds_since(start);
-      return true;
-    }
+    if (!std::isfinite(e)) continue;
+    if (-step * slope > noise) accepted = e <= energy0 + settings_.armijo * step * slope;
+    else accepted = gradient(trial).norm() < gradient_norm;  // E cannot tell; ∇E can
   }
+  if (accepted) x = trial;
   report.seconds.line_search += seconds_since(start);
-  return false;
+  return accepted;
+}
+
+double NewtonSolver::magnitude(const Positions& x) const {
+  double sum = 0.0;
+  for (const WeightedForm& f : forms_) sum += std::abs(f.weight * f.form->value(x));
+  return sum;
 }
 
 NewtonReport NewtonSolver::minimize(Positions& x) {
@@ -133,19 +146,9 @@ NewtonReport NewtonSolver::minimize(Positions& x) {
         report.converged = true;  // the remaining correction is below round-off of x
         break;
       }
-      if (d.allFinite() && g.dot(d) < 0.0) {
-        moved = line_search(x, e, g, d, report);
-        if (!moved) {  // fall-back 2: energy differences below round-off near the solution
-          Positions trial = x;
-          dofs_.scatter_add(d, 1.0, trial);
-          if (gradient(trial).norm() < g.norm()) {
-            x = trial;
-            moved = true;
-          }
-        }
-      }
+      if (d.allFinite() && g.dot(d) < 0.0) moved = line_search(x, e, g, d, report);
     }
-    if (!moved) {  // fall-back 3: Jacobi-scaled gradient step
+    if (!moved) {  // fall-back: Jacobi-scaled gradient step
       const Eigen::VectorXd diagonal = hessian_.diagonal().cwiseAbs().cwiseMax(1e-300);
       const Eigen::VectorXd d = -g.cwiseQuotient(diagonal);
       ++report.gradient_steps;

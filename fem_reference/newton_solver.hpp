@@ -5,10 +5,12 @@
 //
 //   1. the factorisation fails or the direction is not a descent direction
 //        → shift the diagonal by τ (τ = 1e-8·mean diag, ×100 per retry, 4 retries);
-//   2. the line search finds no Armijo decrease (near convergence E changes below round-off)
-//        → accept the full Newton step if it lowers ‖∇E‖;
-//   3. otherwise → one Jacobi-scaled gradient step, d = −diag(H)⁻¹ ∇E, with line search;
-//   4. if that fails too, stop and report the solve as not converged.
+//   2. the line search finds no acceptable step → one Jacobi-scaled gradient step,
+//        d = −diag(H)⁻¹ ∇E, with line search;
+//   3. if that fails too, stop and report the solve as not converged.
+// Where a trial step's predicted decrease is below the energy's round-off (near the solution,
+// or when large loads or rest energies sit in E), the line search accepts a step that lowers
+// ‖∇E‖ instead, since E can no longer tell better from worse.
 //
 // Stopping test: ‖∇E‖₂ ≤ tolerance · s, with s = Σ_f ‖w_f ∇form_f(x₀)‖₂ the size of the terms
 // that must balance at the solution (the problem's own force scale, in the units of ∇E); or a
@@ -83,6 +85,9 @@ class NewtonSolver {
   /// Backtracking Armijo search along d from x; on success moves x and returns true.
   bool line_search(Positions& x, double energy, const Eigen::VectorXd& g, const Eigen::VectorXd& d,
                    NewtonReport& report) const;
+
+  /// Σ_f |w_f form_f(x)|, the scale of E's round-off.
+  double magnitude(const Positions& x) const;
 
   std::vector<WeightedForm> forms_;
   NewtonSettings settings_;

@@ -54,8 +54,8 @@ Particles make_particles(const TetMesh& mesh, double density) {
 
 void add_neo_hookean_tets(Model& model, const TetMesh& mesh, LameParameters material,
                           double rayleigh_time) {
-  if (!(material.mu > 0.0) || !(material.lambda > 0.0))
-    throw std::invalid_argument("add_neo_hookean_tets: need mu > 0 and lambda > 0");
+  if (!(material.mu > 0.0) || !(material.lambda + material.mu > 0.0))
+    throw std::invalid_argument("add_neo_hookean_tets: need mu > 0 and lambda + mu > 0");
   const Eigen::VectorXd volumes = tet_volumes(mesh.V, mesh.T);
   require_positive_volumes(volumes, "add_neo_hookean_tets");
   for (int t = 0; t < mesh.T.rows(); ++t) {
@@ -64,7 +64,7 @@ void add_neo_hookean_tets(Model& model, const TetMesh& mesh, LameParameters mate
     tet.Dm_inv = edge_matrix(tet_positions(mesh.V, mesh.T, t)).inverse();
     tet.rest_volume = volumes[t];
     tet.mu = material.mu;
-    tet.lambda = material.lambda;
+    tet.lambda = material.lambda + material.mu;  // so that small strains see Lamé (μ, λ)
     tet.beta_deviatoric = beta_for(tet.compliance_deviatoric(), rayleigh_time);
     tet.beta_hydrostatic = beta_for(tet.compliance_hydrostatic(), rayleigh_time);
     model.neo_hookean.push_back(tet);

@@ -41,7 +41,10 @@ struct NeoHookeanTet {
   std::array<int, 4> particles;
   Mat3 Dm_inv;         ///< inverse rest edge matrix
   double rest_volume;  ///< V [m³]
-  double mu, lambda;   ///< Lamé parameters [Pa]
+  /// Parameters of the energy μ/2 tr FᵀF + λ/2 (det F − 1 − μ/λ)² [Pa]. Its linearisation
+  /// at F = I has Lamé parameters (μ, λ − μ), so add_neo_hookean_tets stores
+  /// λ = λ_Lamé + μ: a body then answers small loads as linear elasticity with (E, ν) does.
+  double mu, lambda;
   double beta_deviatoric, beta_hydrostatic;  ///< β_D, β_H
   double compliance_deviatoric() const { return 1.0 / (mu * rest_volume); }      ///< α_D
   double compliance_hydrostatic() const { return 1.0 / (lambda * rest_volume); }  ///< α_H
@@ -84,7 +87,8 @@ LameParameters lame_from_young_poisson(double young, double poisson);
 /// Particles at the mesh vertices at rest, with lumped masses from density ρ [kg/m³].
 Particles make_particles(const TetMesh& mesh, double density);
 
-/// One Neo-Hookean pair per tetrahedron. `rayleigh_time` τ [s] sets stiffness-proportional
+/// One Neo-Hookean pair per tetrahedron with the Lamé parameters `material` at small strain
+/// (the energy's λ is material.lambda + material.mu, see NeoHookeanTet). `rayleigh_time` τ [s] sets stiffness-proportional
 /// damping β = τ/α for both constraints, so that γ = αβ/h = τ/h (XPBD eq. 26).
 void add_neo_hookean_tets(Model& model, const TetMesh& mesh, LameParameters material,
                           double rayleigh_time = 0.0);

@@ -9,7 +9,7 @@ namespace {
 
 TEST(StiffnessStudy, XpbdRestDeflectionIsIndependentOfIterationsAndPbdIsNot) {
   StiffnessStudySettings settings;
-  settings.iterations = {5, 20};
+  settings.iterations = {10, 20};
   settings.cells_along = 5;
   settings.substeps = 25;
   const std::vector<StiffnessRun> runs = run_stiffness_study(settings);

@@ -7,6 +7,7 @@
 
 #include "tests/common/finite_differences.hpp"
 #include "xpbd/distance_constraint.hpp"
+#include "xpbd/energy.hpp"
 #include "xpbd/neo_hookean_constraints.hpp"
 #include "xpbd/tet_volume_constraint.hpp"
 
@@ -158,6 +159,24 @@ TEST(NeoHookeanPair, IsStressFreeAtRestThoughNeitherConstraintIsZero) {
   // Rest energy density is what the pair stores at F = I.
   EXPECT_NEAR(0.5 * mu * 3.0 + 0.5 * lambda * (mu / lambda) * (mu / lambda),
               neo_hookean_rest_energy_density(mu, lambda), 1e-9 * mu);
+}
+
+TEST(NeoHookeanPair, SmallStrainEnergyIsLinearElasticityWithTheGivenLameParameters) {
+  // The pair linearises to Lamé (μ, λ_energy − μ); the model builder compensates, so that
+  // U((I + tε)X) / t² → V (μ ε:ε + λ/2 (tr ε)²) with the (μ, λ) of E and ν. Without the
+  // compensation a ν = 0.3 body is 10% too soft (caught by the cantilever validation).
+  const TetMesh mesh = make_box_tet_mesh(Vec3(0.02, 0.01, 0.015), 2, 1, 1);
+  const LameParameters lame = lame_from_young_poisson(1e6, 0.3);
+  Model model;
+  model.particles = make_particles(mesh, 1000.0);
+  add_neo_hookean_tets(model, mesh, lame);
+  Mat3 strain;
+  strain << 0.3, 0.1, -0.2, 0.1, -0.5, 0.25, -0.2, 0.25, 0.4;
+  const double t = 1e-5, volume = 0.02 * 0.01 * 0.015;
+  model.particles.x = mesh.V * (Mat3::Identity() + t * strain).transpose();
+  const double expected = volume * (lame.mu * strain.squaredNorm() +
+                                    0.5 * lame.lambda * strain.trace() * strain.trace());
+  EXPECT_NEAR(elastic_energy(model) / (t * t), expected, 1e-4 * expected);
 }
 
 }  // namespace
