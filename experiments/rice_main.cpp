@@ -7,6 +7,7 @@
 #include <iostream>
 #include <memory>
 
+#include "experiments/convergence_study.hpp"
 #include "experiments/oscillator_study.hpp"
 #include "experiments/xpbd_stiffness_study.hpp"
 
@@ -43,6 +44,21 @@ int main(int argc, char** argv) {
   oscillator_cmd->add_option("--substeps", oscillator.substeps, "substeps per frame to sweep")
       ->capture_default_str();
 
+  ConvergenceSettings convergence;
+  std::string convergence_out = "out/convergence";
+  bool convergence_quick = false;
+  CLI::App* convergence_cmd = study->add_subcommand(
+      "convergence", "XPBD error against the reference solver over substeps, iterations, resolution");
+  convergence_cmd->add_option("--out", convergence_out, "output folder")->capture_default_str();
+  convergence_cmd->add_flag("--quick", convergence_quick, "reduced grid for CI (under a minute)");
+  CLI::Option* duration_opt = convergence_cmd->add_option("--duration", convergence.duration, "simulated time [s]")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+  CLI::Option* young_opt = convergence_cmd->add_option("--young", convergence.bar.young, "Young's modulus [Pa]")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+  CLI::Option* tau_opt = convergence_cmd->add_option("--rayleigh-time", convergence.rayleigh_time,
+                                                     "tau of the damped runs [s]")
+      ->check(CLI::PositiveNumber)->capture_default_str();
+
   CLI11_PARSE(app, argc, argv);
   std::unique_ptr<tbb::global_control> limit;
   if (threads > 0)
@@ -58,6 +74,13 @@ int main(int argc, char** argv) {
       for (const int n : oscillator.substeps)
         if (n < 1) throw CLI::ValidationError("--substeps", "every count must be >= 1");
       oscillator_study_command(oscillator, oscillator_out);
+    }
+    if (*convergence_cmd) {
+      ConvergenceSettings settings = convergence_quick ? ConvergenceSettings::quick() : ConvergenceSettings{};
+      if (duration_opt->count()) settings.duration = convergence.duration;
+      if (young_opt->count()) settings.bar.young = convergence.bar.young;
+      if (tau_opt->count()) settings.rayleigh_time = convergence.rayleigh_time;
+      convergence_study_command(settings, convergence_out);
     }
   } catch (const CLI::Error& e) {
     return app.exit(e);

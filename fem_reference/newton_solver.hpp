@@ -7,7 +7,8 @@
 //        → shift the diagonal by τ (τ = 1e-8·mean diag, ×100 per retry, 4 retries);
 //   2. the line search finds no acceptable step → one Jacobi-scaled gradient step,
 //        d = −diag(H)⁻¹ ∇E, with line search;
-//   3. if that fails too, stop and report the solve as not converged.
+//   3. if that fails too, stop ("stalled"): converged if Newton's correction ‖d‖∞ is below
+//      1e-8 ‖x‖∞, not converged otherwise.
 // Where a trial step's predicted decrease is below the energy's round-off (near the solution,
 // or when large loads or rest energies sit in E), the line search accepts a step that lowers
 // ‖∇E‖ instead, since E can no longer tell better from worse.
@@ -50,6 +51,7 @@ struct NewtonReport {
   int iterations = 0;         ///< Newton (or fall-back) steps taken
   int regularized_steps = 0;  ///< steps whose matrix needed a diagonal shift
   int gradient_steps = 0;     ///< steps that fell back to a gradient step
+  bool stalled = false;       ///< ended because no step lowered E or ‖∇E‖ measurably
   double energy = 0.0;        ///< E at the end
   double gradient_norm = 0.0; ///< ‖∇E‖₂ over the free DOFs at the end
   double gradient_scale = 0.0;///< s of the stopping test

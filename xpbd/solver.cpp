@@ -71,6 +71,7 @@ void Solver::substep(double h) {
   lambda_volume_.assign(model_.volumes.size(), 0.0);
   lambda_neo_hookean_.assign(model_.neo_hookean.size(), Vec2::Zero());
   lambda_attachment_.assign(model_.attachments.size(), Vec3::Zero());
+  if (settings_.diagnostics) x_predicted_ = model_.particles.x;
   for (int k = 0; k < settings_.iterations; ++k) iterate(h);
   Particles& p = model_.particles;
   p.v = (p.x - x_previous_) / h;
@@ -265,43 +266,74 @@ void Solver::fail(const char* constraint_type, int index) const {
 }
 
 StepDiagnostics Solver::measure(double h) const {
+  // Residuals of the last substep: h_c = C + α̃λ + γ∇C(x − xⁿ) per constraint, and
+  // g = M(x − x̃) − Σ ∇Cᵀλ per particle.
   const Positions& x = model_.particles.x;
+  const Eigen::VectorXd& w = model_.particles.w;
+  Positions g = Positions::Zero(x.rows(), 3);
+  for (int i = 0; i < x.rows(); ++i)
+    if (w[i] > 0.0) g.row(i) = (x.row(i) - x_predicted_.row(i)) / w[i];
   double residual2 = 0.0;
-  const auto add = [&](double C, double alpha, double lambda) {
-    const double r = C + alpha / (h * h) * lambda;
+  const auto add = [&](double C, double alpha, double beta, double lambda, double grad_dot_dx) {
+    const ScaledCompliance s = scale_compliance(alpha, beta, h);
+    const double r = C + s.alpha_tilde * lambda + s.gamma * grad_dot_dx;
     residual2 += r * r;
+  };
+  const auto displacement = [&](int i) -> Vec3 { return position(x, i) - position(x_previous_, i); };
+  const auto subtract = [&](const auto& ids, const auto& gradient, double lambda) {
+    for (size_t k = 0; k < ids.size(); ++k) g.row(ids[k]) -= lambda * gradient.template segment<3>(3 * k).transpose();
+  };
+  const auto stencil_displacement = [&](const auto& ids) {
+    Vec12 dx;
+    for (int k = 0; k < 4; ++k) dx.segment<3>(3 * k) = displacement(ids[k]);
+    return dx;
   };
   for (size_t c = 0; c < model_.distances.size(); ++c) {
     const DistanceConstraint& d = model_.distances[c];
-    add(distance_constraint_value(position(x, d.particles[0]), position(x, d.particles[1]), d.rest_length),
-        d.compliance, lambda_distance_[c]);
+    const Vec3 xi = position(x, d.particles[0]), xj = position(x, d.particles[1]);
+    const Vec6 gradient = distance_constraint_gradient(xi, xj);
+    Vec6 dx;
+    dx << displacement(d.particles[0]), displacement(d.particles[1]);
+    add(distance_constraint_value(xi, xj, d.rest_length), d.compliance, d.damping, lambda_distance_[c],
+        gradient.dot(dx));
+    subtract(d.particles, gradient, lambda_distance_[c]);
   }
   for (size_t c = 0; c < model_.volumes.size(); ++c) {
     const TetVolumeConstraint& v = model_.volumes[c];
     const auto& id = v.particles;
-    add(tet_volume_constraint_value(
-            stack(position(x, id[0]), position(x, id[1]), position(x, id[2]), position(x, id[3])),
-            v.rest_volume),
-        v.compliance, lambda_volume_[c]);
+    const Vec12 xs = stack(position(x, id[0]), position(x, id[1]), position(x, id[2]), position(x, id[3]));
+    const Vec12 gradient = tet_volume_constraint_gradient(xs);
+    add(tet_volume_constraint_value(xs, v.rest_volume), v.compliance, v.damping, lambda_volume_[c],
+        gradient.dot(stencil_displacement(id)));
+    subtract(id, gradient, lambda_volume_[c]);
   }
   for (size_t c = 0; c < model_.neo_hookean.size(); ++c) {
     const NeoHookeanTet& t = model_.neo_hookean[c];
     const auto& id = t.particles;
-    const Mat3 F = edge_matrix(position(x, id[0]), position(x, id[1]), position(x, id[2]),
-                               position(x, id[3])) * t.Dm_inv;
-    add(neo_hookean_deviatoric_value(F), t.compliance_deviatoric(), lambda_neo_hookean_[c][0]);
-    add(neo_hookean_hydrostatic_value(F, neo_hookean_gamma(t.mu, t.lambda)),
-        t.compliance_hydrostatic(), lambda_neo_hookean_[c][1]);
+    const Vec12 xs = stack(position(x, id[0]), position(x, id[1]), position(x, id[2]), position(x, id[3]));
+    const Mat3 F = deformation_gradient(xs, t.Dm_inv);
+    const Vec12 grad_D = neo_hookean_deviatoric_gradient(xs, t.Dm_inv);
+    const Vec12 grad_H = neo_hookean_hydrostatic_gradient(xs, t.Dm_inv);
+    const Vec12 dx = stencil_displacement(id);
+    const Vec2& lambda = lambda_neo_hookean_[c];
+    add(neo_hookean_deviatoric_value(F), t.compliance_deviatoric(), t.beta_deviatoric, lambda[0], grad_D.dot(dx));
+    add(neo_hookean_hydrostatic_value(F, neo_hookean_gamma(t.mu, t.lambda)), t.compliance_hydrostatic(),
+        t.beta_hydrostatic, lambda[1], grad_H.dot(dx));
+    subtract(id, (grad_D * lambda[0] + grad_H * lambda[1]).eval(), 1.0);
   }
   for (size_t a = 0; a < model_.attachments.size(); ++a) {
     const Attachment& attachment = model_.attachments[a];
     const Vec3 r = (position(x, attachment.particle) - attachment.target) +
                    attachment.compliance / (h * h) * lambda_attachment_[a];
     residual2 += r.squaredNorm();
+    g.row(attachment.particle) -= lambda_attachment_[a].transpose();
   }
   StepDiagnostics d;
   d.step = step_;
   d.constraint_residual = std::sqrt(residual2);
+  for (int i = 0; i < x.rows(); ++i)
+    if (w[i] > 0.0) d.primal_residual += g.row(i).squaredNorm();
+  d.primal_residual = std::sqrt(d.primal_residual);
   d.kinetic_energy = kinetic_energy(model_.particles);
   d.gravitational_energy = gravitational_energy(model_);
   d.elastic_energy = elastic_energy(model_);

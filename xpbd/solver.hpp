@@ -41,7 +41,13 @@ struct SolverSettings {
 /// Figures of the state at the end of a step.
 struct StepDiagnostics {
   long step = 0;                      ///< index of the step these figures describe
-  double constraint_residual = 0.0;   ///< ‖C + α̃λ‖₂ over the equality constraints
+  /// ‖C + α̃λ + γ∇C(x − xⁿ)‖₂ over the equality constraints (XPBD eq. 9 with damping): what
+  /// the iterations drive to zero.
+  double constraint_residual = 0.0;
+  /// ‖M(x − x̃) − ∇C(x)ᵀλ‖₂ over free particles (XPBD eq. 8): XPBD assumes it stays zero; it
+  /// does not for non-linear constraints (the gap to backward Euler; ground contacts, which
+  /// carry no λ, also show here).
+  double primal_residual = 0.0;
   double kinetic_energy = 0.0;
   double gravitational_energy = 0.0;
   double elastic_energy = 0.0;
@@ -85,7 +91,8 @@ class Solver {
 
   Model& model_;
   SolverSettings settings_;
-  Positions x_previous_;  ///< xⁿ, positions at the start of the substep
+  Positions x_previous_;   ///< xⁿ, positions at the start of the substep
+  Positions x_predicted_;  ///< x̃ of the substep, kept only for diagnostics
   std::vector<double> lambda_distance_, lambda_volume_;
   std::vector<Vec2> lambda_neo_hookean_;  ///< (λ_D, λ_H) per tet
   std::vector<Vec3> lambda_attachment_;

@@ -1,0 +1,336 @@
+// XPBD against the reference solver over substeps, iterations and resolution; see
+// convergence_study.hpp.
+#include "experiments/convergence_study.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <tuple>
+
+#include "experiments/output.hpp"
+#include "fem_reference/implicit_solver.hpp"
+#include "fem_reference/trajectory_error.hpp"
+#include "xpbd/solver.hpp"
+
+namespace rice::experiments {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using xpbd::Positions;
+
+/// One simulation setting shared by a reference trajectory and the XPBD runs against it.
+struct Case {
+  Scene scene;
+  BodyModel body;
+  double rayleigh_time;
+  int resolution;
+  int substeps;
+};
+
+/// A state on the reference trajectory at the start of a frame, and the state one step later.
+struct StepSample {
+  Positions x, v, x_next;
+};
+
+struct Reference {
+  Case setting;
+  std::vector<Positions> frames;  ///< positions at frame ends; frames[0] is the start
+  std::vector<StepSample> samples;
+  double wall_per_sim_second = 0.0;
+  double newton_iterations = 0.0;  ///< mean per step
+  int unconverged_steps = 0;
+  bool failed = false;
+  int tets = 0;
+};
+
+int frame_count(const ConvergenceSettings& s) { return static_cast<int>(std::lround(s.duration / s.frame)); }
+
+Reference run_reference(const ConvergenceSettings& s, const Case& c) {
+  Reference ref{c, {}, {}};
+  xpbd::Model model = make_scene(c.scene, c.body, s.bar, c.resolution, c.rayleigh_time);
+  ref.tets = static_cast<int>(std::max(model.neo_hookean.size(), model.volumes.size()));
+  const double h = s.frame / c.substeps;
+  fem::ImplicitSolver solver(model, {.time_step = h, .newton = {.tolerance = s.reference_tolerance}});
+  ref.frames.push_back(model.particles.x);
+  long newton_iterations = 0;
+  const auto start = Clock::now();
+  try {
+    for (int f = 0; f < frame_count(s); ++f) {
+      for (int n = 0; n < c.substeps; ++n) {
+        const bool sample = n == 0 && f % s.sample_every == 0;
+        if (sample) ref.samples.push_back({model.particles.x, model.particles.v, {}});
+        solver.step();
+        if (sample) ref.samples.back().x_next = model.particles.x;
+        newton_iterations += solver.report().iterations;
+        if (!solver.report().converged) ++ref.unconverged_steps;
+      }
+      ref.frames.push_back(model.particles.x);
+    }
+  } catch (const xpbd::SimulationError&) {
+    ref.failed = true;
+  }
+  ref.wall_per_sim_second = seconds_since(start) / s.duration;
+  ref.newton_iterations = static_cast<double>(newton_iterations) / (frame_count(s) * c.substeps);
+  return ref;
+}
+
+ConvergenceRun describe(const Case& c, const char* method, int tets) {
+  ConvergenceRun run;
+  run.scene = scene_name(c.scene);
+  run.model = body_model_name(c.body);
+  run.method = method;
+  run.resolution = c.resolution;
+  run.tets = tets;
+  run.rayleigh_time = c.rayleigh_time;
+  run.substeps = c.substeps;
+  return run;
+}
+
+ConvergenceRun run_position_based(const ConvergenceSettings& s, const Reference& ref, int iterations,
+                                  xpbd::Method method) {
+  const Case& c = ref.setting;
+  ConvergenceRun run = describe(c, method == xpbd::Method::kXpbd ? "xpbd" : "pbd", ref.tets);
+  run.iterations = iterations;
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  xpbd::Model model = make_scene(c.scene, c.body, s.bar, c.resolution, c.rayleigh_time);
+  xpbd::SolverSettings settings{.time_step = s.frame, .substeps = c.substeps, .iterations = iterations,
+                                .method = method, .execution = xpbd::Execution::kSerial};
+  fem::TrajectoryError error;
+  const auto start = Clock::now();
+  try {
+    xpbd::Solver solver(model, settings);
+    for (int f = 0; f < frame_count(s); ++f) {
+      solver.step();
+      error.add_frame(model.particles.x, ref.frames[f + 1]);
+    }
+  } catch (const xpbd::SimulationError&) {
+    run.failed = true;
+  }
+  run.wall_per_sim_second = seconds_since(start) / s.duration;
+  run.trajectory_error = run.failed ? kNaN : error.rms() / s.bar.length;
+  run.max_frame_error = run.failed ? kNaN : error.max_frame_rms() / s.bar.length;
+
+  // One step of h from reference states: XPBD's answer against Newton's.
+  settings.time_step = s.frame / c.substeps;
+  settings.substeps = 1;
+  settings.diagnostics = true;
+  double distance = 0.0, primal = 0.0, constraint = 0.0;
+  try {
+    for (const StepSample& sample : ref.samples) {
+      model.particles.x = sample.x;
+      model.particles.v = sample.v;
+      xpbd::Solver one_step(model, settings);
+      one_step.step();
+      distance += fem::rms_distance(model.particles.x, sample.x_next);
+      primal += one_step.diagnostics().primal_residual;
+      constraint += one_step.diagnostics().constraint_residual;
+    }
+    const double count = static_cast<double>(ref.samples.size());
+    run.step_distance = distance / count / s.bar.length;
+    run.primal_residual = primal / count;
+    run.constraint_residual = constraint / count;
+  } catch (const xpbd::SimulationError&) {
+    run.step_distance = run.primal_residual = run.constraint_residual = kNaN;
+  }
+  return run;
+}
+
+/// Marks the XPBD runs that no other XPBD run of the same panel beats in both error and cost.
+void mark_pareto_fronts(std::vector<ConvergenceRun>& runs) {
+  const auto panel = [](const ConvergenceRun& r) {
+    return std::make_tuple(r.scene, r.model, r.rayleigh_time, r.resolution);
+  };
+  for (ConvergenceRun& r : runs) {
+    if (r.method != "xpbd" || r.failed) continue;
+    r.pareto = std::none_of(runs.begin(), runs.end(), [&](const ConvergenceRun& o) {
+      return &o != &r && o.method == "xpbd" && !o.failed && panel(o) == panel(r) &&
+             o.wall_per_sim_second <= r.wall_per_sim_second && o.trajectory_error <= r.trajectory_error &&
+             (o.wall_per_sim_second < r.wall_per_sim_second || o.trajectory_error < r.trajectory_error);
+    });
+  }
+}
+
+std::vector<Case> reference_cases(const ConvergenceSettings& s) {
+  std::vector<Case> cases;
+  for (const Scene scene : {Scene::kHangingCantilever, Scene::kTwistedBar})
+    for (const double tau : {0.0, s.rayleigh_time})
+      for (const int resolution : s.resolutions)
+        for (const int n : resolution == s.grid_resolution ? s.substeps : s.resolution_substeps)
+          cases.push_back({scene, BodyModel::kNeoHookean, tau, resolution, n});
+  for (const int n : s.substeps)  // PBD's contrast: springs and volumes, undamped
+    cases.push_back({Scene::kHangingCantilever, BodyModel::kSprings, 0.0, s.grid_resolution, n});
+  return cases;
+}
+
+void print_table(const ConvergenceSettings& s, const std::vector<ConvergenceRun>& runs,
+                 const char* title, double ConvergenceRun::*figure) {
+  std::printf("\n%s (resolution %d, relative to L = %g m)\n", title, s.grid_resolution, s.bar.length);
+  std::map<std::tuple<std::string, std::string, std::string, double>, std::map<int, std::map<int, double>>> tables;
+  for (const ConvergenceRun& r : runs)
+    if (r.resolution == s.grid_resolution && r.method != "reference")
+      tables[{r.scene, r.model, r.method, r.rayleigh_time}][r.substeps][r.iterations] = r.*figure;
+  for (const auto& [key, rows] : tables) {
+    const auto& [scene, model, method, tau] = key;
+    std::printf("%s, %s, %s, tau = %g s\n%8s", scene.c_str(), model.c_str(), method.c_str(), tau, "N \\ K");
+    for (int k : s.iterations) std::printf(" %10d", k);
+    std::printf("\n");
+    for (const auto& [n, row] : rows) {
+      std::printf("%8d", n);
+      for (int k : s.iterations) {
+        const auto it = row.find(k);
+        if (it == row.end()) std::printf(" %10s", "-");
+        else std::printf(" %10.3e", it->second);
+      }
+      std::printf("\n");
+    }
+  }
+}
+
+}  // namespace
+
+ConvergenceSettings ConvergenceSettings::quick() {
+  ConvergenceSettings s;
+  s.duration = 0.1;
+  s.substeps = {1, 4, 16};
+  s.iterations = {1, 5, 20};
+  s.resolutions = {1, 2};
+  s.resolution_substeps = {4};
+  s.resolution_iterations = {5};
+  s.sample_every = 2;
+  return s;
+}
+
+std::vector<ConvergenceRun> run_convergence_study(const ConvergenceSettings& s) {
+  if (!(s.duration >= s.frame) || s.substeps.empty() || s.iterations.empty() || s.sample_every < 1 ||
+      std::find(s.resolutions.begin(), s.resolutions.end(), s.grid_resolution) == s.resolutions.end())
+    throw std::invalid_argument("convergence study: need duration >= one frame, substeps and iterations, "
+                                "sample_every >= 1, and grid_resolution among the resolutions");
+  const std::vector<Case> cases = reference_cases(s);
+  std::vector<Reference> references(cases.size());
+  {
+    Progress progress("convergence: references", static_cast<int>(cases.size()));
+    std::atomic<int> done = 0;
+    tbb::parallel_for(size_t{0}, cases.size(), [&](size_t i) {
+      references[i] = run_reference(s, cases[i]);
+      progress.update(++done);
+    });
+    progress.finish();
+  }
+  struct Job {
+    size_t reference;
+    int iterations;
+    xpbd::Method method;
+  };
+  std::vector<Job> jobs;
+  for (size_t i = 0; i < cases.size(); ++i) {
+    const bool springs = cases[i].body == BodyModel::kSprings;
+    for (const int k : cases[i].resolution == s.grid_resolution ? s.iterations : s.resolution_iterations)
+      jobs.push_back({i, k, springs ? xpbd::Method::kPbd : xpbd::Method::kXpbd});
+  }
+  std::vector<ConvergenceRun> runs(jobs.size());
+  {
+    Progress progress("convergence: position-based runs", static_cast<int>(jobs.size()));
+    std::atomic<int> done = 0;
+    tbb::parallel_for(size_t{0}, jobs.size(), [&](size_t j) {
+      runs[j] = run_position_based(s, references[jobs[j].reference], jobs[j].iterations, jobs[j].method);
+      progress.update(++done);
+    });
+    progress.finish();
+  }
+  for (const Reference& ref : references) {
+    ConvergenceRun run = describe(ref.setting, "reference", ref.tets);
+    run.wall_per_sim_second = ref.wall_per_sim_second;
+    run.failed = ref.failed || ref.unconverged_steps > 0;
+    run.iterations = static_cast<int>(std::lround(ref.newton_iterations));
+    runs.push_back(run);
+  }
+  mark_pareto_fronts(runs);
+  return runs;
+}
+
+void convergence_study_command(const ConvergenceSettings& s, const std::filesystem::path& folder) {
+  make_output_folder(folder);
+  const auto start = Clock::now();
+  const std::vector<ConvergenceRun> runs = run_convergence_study(s);
+  CsvTable table({"scene", "model", "method", "resolution", "tets", "rayleigh_time_s", "substeps", "iterations",
+                  "h_s", "wall_s_per_sim_s", "rms_error_rel", "max_frame_error_rel", "step_distance_rel",
+                  "primal_residual", "constraint_residual", "pareto", "status"});
+  for (const ConvergenceRun& r : runs)
+    table.add_row({r.scene, r.model, r.method, cell(r.resolution), cell(r.tets), cell(r.rayleigh_time),
+                   cell(r.substeps), cell(r.iterations), cell(s.frame / r.substeps), cell(r.wall_per_sim_second),
+                   cell(r.trajectory_error), cell(r.max_frame_error), cell(r.step_distance),
+                   cell(r.primal_residual), cell(r.constraint_residual), cell(r.pareto ? 1 : 0),
+                   r.failed ? "failed" : "ok"});
+  write_text_atomically(folder / "convergence.csv", table.text());
+
+  print_table(s, runs, "Trajectory RMS error", &ConvergenceRun::trajectory_error);
+  print_table(s, runs, "One-step distance to the Newton solution", &ConvergenceRun::step_distance);
+  print_table(s, runs, "Primal residual |M(x - x~) - grad C^T lambda| [kg m]", &ConvergenceRun::primal_residual);
+  std::printf("\nReference cost [s per simulated second] and mean Newton iterations per step:\n");
+  for (const ConvergenceRun& r : runs)
+    if (r.method == "reference")
+      std::printf("  %-18s %-11s tau %-6g res %d N %3d: %9.3f s, %d it%s\n", r.scene.c_str(), r.model.c_str(),
+                  r.rayleigh_time, r.resolution, r.substeps, r.wall_per_sim_second, r.iterations,
+                  r.failed ? "  (FAILED or unconverged steps)" : "");
+
+  const std::string grid = std::to_string(s.grid_resolution);
+  render_plot(folder, "convergence", R"(set terminal pngcairo size 1400,1000
+set output 'convergence.png'
+set datafile separator ','
+set datafile missing 'nan'
+set multiplot layout 2,2
+set logscale xy
+set xlabel 'wall time per simulated second [s]'
+set ylabel 'RMS vertex error / length'
+set cblabel 'log2 substeps per frame'
+set key bottom left
+G = )" + grid + R"(
+sel(scene, method, damped) = strcol(1) eq scene && strcol(3) eq method && $4 == G && (damped ? $6 > 0 : $6 == 0)
+do for [scene in 'hanging-cantilever twisted-bar'] {
+  do for [damped = 0:1] {
+    set title sprintf('%s, %s', scene, damped ? 'Rayleigh damping' : 'no damping')
+    plot 'convergence.csv' using (sel(scene, 'xpbd', damped) ? $10 : 1/0):11:(log($7)/log(2)) with points pt 7 ps 1.2 palette title 'XPBD (N, K grid)', \
+         '' using (sel(scene, 'xpbd', damped) && $16 == 1 ? $10 : 1/0):11 smooth unique with lines lw 2 lc rgb 'black' title 'Pareto front', \
+         '' using (sel(scene, 'pbd', damped) ? $10 : 1/0):11 with points pt 6 ps 1.2 lc rgb 'red' title 'PBD (springs, vs its reference)'
+  }
+}
+unset multiplot
+)");
+  render_plot(folder, "convergence_resolution", R"(set terminal pngcairo size 1400,500
+set output 'convergence_resolution.png'
+set datafile separator ','
+set datafile missing 'nan'
+set multiplot layout 1,2
+set logscale xy
+set xlabel 'wall time per simulated second [s]'
+set ylabel 'RMS vertex error / length (vs reference at that resolution)'
+set key bottom left
+do for [scene in 'hanging-cantilever twisted-bar'] {
+  set title sprintf('%s: resolution axis (XPBD, no damping)', scene)
+  plot for [r in ')" + [&] {
+    std::string list;
+    for (int r : s.resolutions) {
+      if (!list.empty()) list += ' ';
+      list += std::to_string(r);
+    }
+    return list;
+  }() + R"('] 'convergence.csv' using (strcol(1) eq scene && strcol(3) eq 'xpbd' && $4 == r+0 && $6 == 0 ? $10 : 1/0):11 with points pt 7 ps 1.2 title sprintf('%s cells across', r)
+}
+unset multiplot
+)");
+  write_text_atomically(folder / "run_info.txt",
+                        run_info({{"study", "convergence"},
+                                  {"duration_s", cell(s.duration)},
+                                  {"young_pa", cell(s.bar.young)},
+                                  {"rayleigh_time_s", cell(s.rayleigh_time)},
+                                  {"reference_tolerance", cell(s.reference_tolerance)},
+                                  {"runs", cell(static_cast<long>(runs.size()))},
+                                  {"wall_s", cell(seconds_since(start))}}));
+  std::printf("\nwall time %.1f s\n", seconds_since(start));
+}
+
+}  // namespace rice::experiments
