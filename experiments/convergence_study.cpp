@@ -294,7 +294,7 @@ do for [scene in 'hanging-cantilever twisted-bar'] {
   do for [damped = 0:1] {
     set title sprintf('%s, %s', scene, damped ? 'Rayleigh damping' : 'no damping')
     plot 'convergence.csv' using (sel(scene, 'xpbd', damped) ? $10 : 1/0):11:(log($7)/log(2)) with points pt 7 ps 1.2 palette title 'XPBD (N, K grid)', \
-         '' using (sel(scene, 'xpbd', damped) && $16 == 1 ? $10 : 1/0):11 smooth unique with lines lw 2 lc rgb 'black' title 'Pareto front', \
+         '' using (sel(scene, 'xpbd', damped) && $16 == 1 ? $10 : 1/0):11 with points pt 4 ps 2.2 lw 2 lc rgb 'black' title 'Pareto front', \
          '' using (sel(scene, 'pbd', damped) ? $10 : 1/0):11 with points pt 6 ps 1.2 lc rgb 'red' title 'PBD (springs, vs its reference)'
   }
 }

@@ -37,6 +37,18 @@ struct ConstraintDerivatives {
 /// How many derivatives `evaluate` computes: values only, plus Jacobian, plus Hessians.
 enum class Order { kValue = 0, kGradient = 1, kHessian = 2 };
 
+/// Coefficients of a one-row constraint type with `compliance` and `damping` members.
+template <class Constraint>
+struct ScalarCoefficients {
+  static Eigen::Matrix<double, 1, 1> compliance(const Constraint& c) {
+    return Eigen::Matrix<double, 1, 1>(c.compliance);
+  }
+  static Eigen::Matrix<double, 1, 1> damping(const Constraint& c) {
+    return Eigen::Matrix<double, 1, 1>(c.damping);
+  }
+  static double rest_energy(const Constraint&) { return 0.0; }
+};
+
 /// Shared by the tet kernels: y = vec(Ds Dm⁻¹), column-major (tet_stencil.hpp).
 struct TetReduction {
   static Vec9 reduce(const Vec12& x, const Mat3& Dm_inv) {
@@ -71,7 +83,7 @@ struct NeoHookeanKernel {
 };
 
 /// Tet volume C = det(Ds)/6 − V0, y = vec Ds.
-struct TetVolumeKernel {
+struct TetVolumeKernel : ScalarCoefficients<xpbd::TetVolumeConstraint> {
   using Constraint = xpbd::TetVolumeConstraint;
   static constexpr int kArity = 4, kRows = 1, kReduced = 9;
   using Derivatives = ConstraintDerivatives<kRows, kReduced>;
@@ -80,18 +92,11 @@ struct TetVolumeKernel {
   static Vec9 reduce(const Constraint&, const Vec12& x) { return TetReduction::reduce(x, Mat3::Identity()); }
   static Vec12 expand(const Constraint&, const Vec9& g) { return TetReduction::expand(g, Mat3::Identity()); }
   static Mat12 expand(const Constraint&, const Mat9& H) { return TetReduction::expand(H, Mat3::Identity()); }
-  static Eigen::Matrix<double, 1, 1> compliance(const Constraint& c) {
-    return Eigen::Matrix<double, 1, 1>(c.compliance);
-  }
-  static Eigen::Matrix<double, 1, 1> damping(const Constraint& c) {
-    return Eigen::Matrix<double, 1, 1>(c.damping);
-  }
-  static double rest_energy(const Constraint&) { return 0.0; }
   static Derivatives evaluate(const Constraint& c, const Vec9& y, Order order);
 };
 
 /// Spring C = |x0 − x1| − L, y = x0 − x1.
-struct DistanceKernel {
+struct DistanceKernel : ScalarCoefficients<xpbd::DistanceConstraint> {
   using Constraint = xpbd::DistanceConstraint;
   static constexpr int kArity = 2, kRows = 1, kReduced = 3;
   using Derivatives = ConstraintDerivatives<kRows, kReduced>;
@@ -102,13 +107,6 @@ struct DistanceKernel {
   static Mat6 expand(const Constraint&, const Mat3& H) {
     return (Mat6() << H, -H, -H, H).finished();
   }
-  static Eigen::Matrix<double, 1, 1> compliance(const Constraint& c) {
-    return Eigen::Matrix<double, 1, 1>(c.compliance);
-  }
-  static Eigen::Matrix<double, 1, 1> damping(const Constraint& c) {
-    return Eigen::Matrix<double, 1, 1>(c.damping);
-  }
-  static double rest_energy(const Constraint&) { return 0.0; }
   static Derivatives evaluate(const Constraint& c, const Vec3& y, Order order);
 };
 

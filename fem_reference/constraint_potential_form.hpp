@@ -1,13 +1,13 @@
-// A quadratic potential on constraint values, the one shape shared by the elastic energy and
-// the Rayleigh dissipation potential of the reference solver:
+// The constraint terms of the reference solver's energy, one form per constraint type:
 //
-//   Φ(x) = Σ_e [ Σ_r ½ k_er (C_r(x_e) − c_er)² − U0_e ]
+//   Φ(x) = Σ_e [ Σ_r ½ k_er C_r(x_e)² + ½ b_er (C_r(x_e) − c_er)² − U0_e ]
 //
-//   elastic energy  U:  k = 1/α, c = 0, U0 = the rest energy     (DESIGN.md: U = Σ ½ Cᵀα⁻¹C)
-//   damping         Ψ:  k = β/h, c = C(xⁿ), U0 = 0               (implicit_solver.hpp)
-//
-// ∇Φ = Σ k (C − c) ∇C and ∇²Φ = Σ k (∇C ∇Cᵀ + (C − c) ∇²C), computed in the kernel's reduced
-// coordinate (constraint_kernels.hpp), projected there when asked, then mapped to x.
+// with k = 1/α (the elastic energy U = Σ ½ Cᵀα⁻¹C of DESIGN.md, U0 its rest value) and, in a
+// time step, b = β/h, c = C(xⁿ) (the Rayleigh damping potential Ψ of implicit_solver.hpp).
+// Both parts share one evaluation of the constraint derivatives per element:
+//   ∇Φ = Σ (k C + b (C − c)) ∇C,   ∇²Φ = Σ (k + b) ∇C ∇Cᵀ + (k C + b (C − c)) ∇²C,
+// computed in the kernel's reduced coordinate (constraint_kernels.hpp), projected there as
+// a whole when asked, then mapped to x.
 #pragma once
 
 #include <memory>
@@ -34,15 +34,19 @@ class ConstraintPotentialForm final : public ElementForm<Kernel::kArity> {
   ConstraintPotentialForm(std::string name, const std::vector<Constraint>& constraints)
       : name_(std::move(name)), constraints_(constraints) {}
 
-  void add(int constraint, const RowVector& stiffness, const RowVector& target, double offset) {
+  /// Element for constraints[constraint] with stiffness k, damping b and rest value U0.
+  void add(int constraint, const RowVector& stiffness, const RowVector& damping, double offset) {
     index_.push_back(constraint);
     stiffness_.push_back(stiffness);
-    target_.push_back(target);
+    damping_.push_back(damping);
+    target_.push_back(RowVector::Zero());
     offset_.push_back(offset);
+    damped_ = damped_ || damping.maxCoeff() > 0.0;
   }
 
-  /// c_e = C(x_e) for every element: the damping potential's state at the start of the step.
+  /// c_e = C(x_e) for every damped element: the state at the start of the step.
   void set_targets(const Positions& x) {
+    if (!damped_) return;
     for (int e = 0; e < element_count(); ++e) target_[e] = evaluate(e, this->gather(x, e), Order::kValue).C;
   }
 
@@ -51,22 +55,23 @@ class ConstraintPotentialForm final : public ElementForm<Kernel::kArity> {
   Particles element_particles(int e) const override { return Kernel::particles(constraint(e)); }
 
   double element_value(int e, const LocalVector& x) const override {
-    const RowVector r = evaluate(e, x, Order::kValue).C - target_[e];
-    return 0.5 * r.dot(stiffness_[e].cwiseProduct(r)) - offset_[e];
+    const RowVector C = evaluate(e, x, Order::kValue).C;
+    const RowVector rate = C - target_[e];
+    return 0.5 * C.dot(stiffness_[e].cwiseProduct(C)) + 0.5 * rate.dot(damping_[e].cwiseProduct(rate)) -
+           offset_[e];
   }
 
   LocalVector element_gradient(int e, const LocalVector& x) const override {
     const auto d = evaluate(e, x, Order::kGradient);
-    const RowVector force = stiffness_[e].cwiseProduct(d.C - target_[e]);
-    return Kernel::expand(constraint(e), (d.dC.transpose() * force).eval());
+    return Kernel::expand(constraint(e), (d.dC.transpose() * force(e, d.C)).eval());
   }
 
   LocalMatrix element_hessian(int e, const LocalVector& x, bool project) const override {
     const auto d = evaluate(e, x, Order::kHessian);
-    const RowVector& k = stiffness_[e];
+    const RowVector f = force(e, d.C);
     Eigen::Matrix<double, Kernel::kReduced, Kernel::kReduced> H =
-        d.dC.transpose() * k.asDiagonal() * d.dC;
-    for (int r = 0; r < Kernel::kRows; ++r) H += k[r] * (d.C[r] - target_[e][r]) * d.d2C[r];
+        d.dC.transpose() * (stiffness_[e] + damping_[e]).asDiagonal() * d.dC;
+    for (int r = 0; r < Kernel::kRows; ++r) H += f[r] * d.d2C[r];
     if (project) H = project_to_psd(H);
     return Kernel::expand(constraint(e), H);
   }
@@ -76,46 +81,40 @@ class ConstraintPotentialForm final : public ElementForm<Kernel::kArity> {
   typename Kernel::Derivatives evaluate(int e, const LocalVector& x, Order order) const {
     return Kernel::evaluate(constraint(e), Kernel::reduce(constraint(e), x), order);
   }
+  /// ∂Φ_e/∂C = k C + b (C − c).
+  RowVector force(int e, const RowVector& C) const {
+    return stiffness_[e].cwiseProduct(C) + damping_[e].cwiseProduct(C - target_[e]);
+  }
 
   std::string name_;
   const std::vector<Constraint>& constraints_;
   std::vector<int> index_;
-  std::vector<RowVector> stiffness_, target_;
+  std::vector<RowVector> stiffness_, damping_, target_;
   std::vector<double> offset_;
+  bool damped_ = false;
 };
 
-/// U = Σ ½ Cᵀα⁻¹C − U_rest over `constraints`. Throws std::invalid_argument for a rigid
-/// (α = 0) or negative compliance, naming the constraint: the reference needs finite energy.
+/// U = Σ ½ Cᵀα⁻¹C − U_rest over `constraints`, plus, when h > 0, the damping potential
+/// Ψ = Σ β/(2h) (C(x) − C(xⁿ))² (call set_targets(xⁿ) at the start of each step). Throws
+/// std::invalid_argument for a rigid (α = 0) or negative compliance or a negative damping,
+/// naming the constraint: the reference needs finite energy.
 template <class Kernel>
-std::unique_ptr<ConstraintPotentialForm<Kernel>> make_elastic_form(
-    const std::string& name, const std::vector<typename Kernel::Constraint>& constraints) {
-  auto form = std::make_unique<ConstraintPotentialForm<Kernel>>(name + " elasticity", constraints);
+std::unique_ptr<ConstraintPotentialForm<Kernel>> make_constraint_form(
+    const std::string& name, const std::vector<typename Kernel::Constraint>& constraints, double h = 0.0) {
+  auto form = std::make_unique<ConstraintPotentialForm<Kernel>>(name, constraints);
   for (size_t i = 0; i < constraints.size(); ++i) {
     const auto alpha = Kernel::compliance(constraints[i]);
+    const auto beta = Kernel::damping(constraints[i]);
     if (!(alpha.minCoeff() > 0.0))
       throw std::invalid_argument("reference solver: " + name + " constraint " + std::to_string(i) +
                                   " has compliance " + std::to_string(alpha.minCoeff()) +
                                   "; it needs a compliance > 0 (finite stiffness)");
-    using Row = typename ConstraintPotentialForm<Kernel>::RowVector;
-    form->add(static_cast<int>(i), alpha.cwiseInverse(), Row::Zero(),
-              Kernel::rest_energy(constraints[i]));
-  }
-  return form;
-}
-
-/// Ψ = Σ β/(2h) (C(x) − C(xⁿ))² over the constraints with β > 0 (others cost nothing); call
-/// set_targets(xⁿ) at the start of each step.
-template <class Kernel>
-std::unique_ptr<ConstraintPotentialForm<Kernel>> make_damping_form(
-    const std::string& name, const std::vector<typename Kernel::Constraint>& constraints, double h) {
-  auto form = std::make_unique<ConstraintPotentialForm<Kernel>>(name + " damping", constraints);
-  for (size_t i = 0; i < constraints.size(); ++i) {
-    const auto beta = Kernel::damping(constraints[i]);
     if (beta.minCoeff() < 0.0)
       throw std::invalid_argument("reference solver: " + name + " constraint " + std::to_string(i) +
                                   " has negative damping " + std::to_string(beta.minCoeff()));
     using Row = typename ConstraintPotentialForm<Kernel>::RowVector;
-    if (beta.maxCoeff() > 0.0) form->add(static_cast<int>(i), beta / h, Row::Zero(), 0.0);
+    form->add(static_cast<int>(i), alpha.cwiseInverse(), h > 0.0 ? Row(beta / h) : Row::Zero(),
+              Kernel::rest_energy(constraints[i]));
   }
   return form;
 }

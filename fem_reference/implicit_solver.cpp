@@ -45,20 +45,21 @@ ImplicitSolver::ImplicitSolver(xpbd::Model& model, const ImplicitSettings& setti
   append_if_used(quasi_static, &loads_, 1.0);
   const auto add_elastic = [&](auto form) {
     if (form->element_count() == 0) return;
-    dynamic.push_back({form.get(), h * h});
     quasi_static.push_back({form.get(), 1.0});
     elastic_.push_back(std::move(form));
   };
-  add_elastic(make_elastic_form<NeoHookeanKernel>("neo-hookean", model.neo_hookean));
-  add_elastic(make_elastic_form<TetVolumeKernel>("tet volume", model.volumes));
-  add_elastic(make_elastic_form<DistanceKernel>("distance", model.distances));
-  add_elastic(make_elastic_form<AttachmentKernel>("attachment", compliant_attachments_));
-  damping_neo_hookean_ = make_damping_form<NeoHookeanKernel>("neo-hookean", model.neo_hookean, h);
-  damping_volume_ = make_damping_form<TetVolumeKernel>("tet volume", model.volumes, h);
-  damping_distance_ = make_damping_form<DistanceKernel>("distance", model.distances, h);
-  append_if_used(dynamic, damping_neo_hookean_.get(), h * h);
-  append_if_used(dynamic, damping_volume_.get(), h * h);
-  append_if_used(dynamic, damping_distance_.get(), h * h);
+  add_elastic(make_constraint_form<NeoHookeanKernel>("neo-hookean", model.neo_hookean));
+  add_elastic(make_constraint_form<TetVolumeKernel>("tet volume", model.volumes));
+  add_elastic(make_constraint_form<DistanceKernel>("distance", model.distances));
+  add_elastic(make_constraint_form<AttachmentKernel>("attachment", compliant_attachments_));
+  step_neo_hookean_ = make_constraint_form<NeoHookeanKernel>("neo-hookean", model.neo_hookean, h);
+  step_volume_ = make_constraint_form<TetVolumeKernel>("tet volume", model.volumes, h);
+  step_distance_ = make_constraint_form<DistanceKernel>("distance", model.distances, h);
+  step_attachment_ = make_constraint_form<AttachmentKernel>("attachment", compliant_attachments_, h);
+  append_if_used(dynamic, step_neo_hookean_.get(), h * h);
+  append_if_used(dynamic, step_volume_.get(), h * h);
+  append_if_used(dynamic, step_distance_.get(), h * h);
+  append_if_used(dynamic, step_attachment_.get(), h * h);
   dynamic_ = std::make_unique<NewtonSolver>(dynamic, fixed_, settings.newton);
   static_ = std::make_unique<NewtonSolver>(quasi_static, fixed_, settings.newton);
 }
@@ -79,9 +80,9 @@ void ImplicitSolver::step() {
   for (int i = 0; i < p.size(); ++i)
     if (!fixed_[i]) x_hat.row(i) += h * p.v.row(i);
   inertia_.set_target(x_hat);
-  damping_neo_hookean_->set_targets(x_start);
-  damping_volume_->set_targets(x_start);
-  damping_distance_->set_targets(x_start);
+  step_neo_hookean_->set_targets(x_start);
+  step_volume_->set_targets(x_start);
+  step_distance_->set_targets(x_start);
 
   // Start from XPBD's prediction x̃ = x̂ + h² M⁻¹ f.
   const bool has_forces = model_.external_forces.rows() != 0;

@@ -73,10 +73,12 @@ class ImplicitSolver {
   std::vector<xpbd::Attachment> compliant_attachments_;
   InertiaForm inertia_;
   LoadForm loads_;
+  /// U alone, for the quasi-static solve; U + Ψ per constraint type, for the time step.
   std::vector<std::unique_ptr<Form>> elastic_;
-  std::unique_ptr<ConstraintPotentialForm<NeoHookeanKernel>> damping_neo_hookean_;
-  std::unique_ptr<ConstraintPotentialForm<TetVolumeKernel>> damping_volume_;
-  std::unique_ptr<ConstraintPotentialForm<DistanceKernel>> damping_distance_;
+  std::unique_ptr<ConstraintPotentialForm<NeoHookeanKernel>> step_neo_hookean_;
+  std::unique_ptr<ConstraintPotentialForm<TetVolumeKernel>> step_volume_;
+  std::unique_ptr<ConstraintPotentialForm<DistanceKernel>> step_distance_;
+  std::unique_ptr<ConstraintPotentialForm<AttachmentKernel>> step_attachment_;
   std::unique_ptr<NewtonSolver> dynamic_, static_;
   NewtonReport report_;
   long step_ = 0;

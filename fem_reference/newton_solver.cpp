@@ -33,6 +33,7 @@ NewtonSolver::NewtonSolver(std::vector<WeightedForm> forms, const std::vector<bo
                            const NewtonSettings& settings)
     : forms_(std::move(forms)), settings_(settings), dofs_(fixed),
       hessian_(dofs_, collect_stencils()) {
+  llt_.cholmod().print = 0;  // a failed factorisation is handled (and counted) by the fall-back
   if (!(settings.tolerance > 0.0) || settings.max_iterations < 1 || !(settings.armijo > 0.0) ||
       !(settings.armijo < 1.0) || settings.max_backtracks < 1)
     throw std::invalid_argument("NewtonSolver: need tolerance > 0, max_iterations >= 1, "

@@ -7,7 +7,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 packages=(
   cmake ninja-build g++ ccache pkg-config
-  libeigen3-dev libtbb-dev libcli11-dev libsuitesparse-dev libopenblas0-pthread
+  libeigen3-dev libtbb-dev libcli11-dev libsuitesparse-dev libopenblas0-serial
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox
 )

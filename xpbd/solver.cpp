@@ -265,14 +265,41 @@ void Solver::fail(const char* constraint_type, int index) const {
                         std::to_string(index));
 }
 
+Positions Solver::constraint_impulses() const {
+  const Positions& x = model_.particles.x;
+  Positions impulse = Positions::Zero(x.rows(), 3);
+  const auto add = [&](const auto& ids, const auto& gradient, double lambda) {
+    for (size_t k = 0; k < ids.size(); ++k)
+      impulse.row(ids[k]) += lambda * gradient.template segment<3>(3 * k).transpose();
+  };
+  const auto stencil = [&](const std::array<int, 4>& id) {
+    return stack(position(x, id[0]), position(x, id[1]), position(x, id[2]), position(x, id[3]));
+  };
+  for (size_t c = 0; c < model_.distances.size(); ++c) {
+    const DistanceConstraint& d = model_.distances[c];
+    add(d.particles, distance_constraint_gradient(position(x, d.particles[0]), position(x, d.particles[1])),
+        lambda_distance_[c]);
+  }
+  for (size_t c = 0; c < model_.volumes.size(); ++c)
+    add(model_.volumes[c].particles, tet_volume_constraint_gradient(stencil(model_.volumes[c].particles)),
+        lambda_volume_[c]);
+  for (size_t c = 0; c < model_.neo_hookean.size(); ++c) {
+    const NeoHookeanTet& t = model_.neo_hookean[c];
+    const Vec12 xs = stencil(t.particles);
+    const Vec2& lambda = lambda_neo_hookean_[c];
+    add(t.particles, (neo_hookean_deviatoric_gradient(xs, t.Dm_inv) * lambda[0] +
+                      neo_hookean_hydrostatic_gradient(xs, t.Dm_inv) * lambda[1]).eval(), 1.0);
+  }
+  for (size_t a = 0; a < model_.attachments.size(); ++a)
+    impulse.row(model_.attachments[a].particle) += lambda_attachment_[a].transpose();
+  return impulse;
+}
+
 StepDiagnostics Solver::measure(double h) const {
   // Residuals of the last substep: h_c = C + α̃λ + γ∇C(x − xⁿ) per constraint, and
   // g = M(x − x̃) − Σ ∇Cᵀλ per particle.
   const Positions& x = model_.particles.x;
   const Eigen::VectorXd& w = model_.particles.w;
-  Positions g = Positions::Zero(x.rows(), 3);
-  for (int i = 0; i < x.rows(); ++i)
-    if (w[i] > 0.0) g.row(i) = (x.row(i) - x_predicted_.row(i)) / w[i];
   double residual2 = 0.0;
   const auto add = [&](double C, double alpha, double beta, double lambda, double grad_dot_dx) {
     const ScaledCompliance s = scale_compliance(alpha, beta, h);
@@ -280,9 +307,6 @@ StepDiagnostics Solver::measure(double h) const {
     residual2 += r * r;
   };
   const auto displacement = [&](int i) -> Vec3 { return position(x, i) - position(x_previous_, i); };
-  const auto subtract = [&](const auto& ids, const auto& gradient, double lambda) {
-    for (size_t k = 0; k < ids.size(); ++k) g.row(ids[k]) -= lambda * gradient.template segment<3>(3 * k).transpose();
-  };
   const auto stencil_displacement = [&](const auto& ids) {
     Vec12 dx;
     for (int k = 0; k < 4; ++k) dx.segment<3>(3 * k) = displacement(ids[k]);
@@ -291,48 +315,42 @@ StepDiagnostics Solver::measure(double h) const {
   for (size_t c = 0; c < model_.distances.size(); ++c) {
     const DistanceConstraint& d = model_.distances[c];
     const Vec3 xi = position(x, d.particles[0]), xj = position(x, d.particles[1]);
-    const Vec6 gradient = distance_constraint_gradient(xi, xj);
     Vec6 dx;
     dx << displacement(d.particles[0]), displacement(d.particles[1]);
     add(distance_constraint_value(xi, xj, d.rest_length), d.compliance, d.damping, lambda_distance_[c],
-        gradient.dot(dx));
-    subtract(d.particles, gradient, lambda_distance_[c]);
+        distance_constraint_gradient(xi, xj).dot(dx));
   }
   for (size_t c = 0; c < model_.volumes.size(); ++c) {
     const TetVolumeConstraint& v = model_.volumes[c];
     const auto& id = v.particles;
     const Vec12 xs = stack(position(x, id[0]), position(x, id[1]), position(x, id[2]), position(x, id[3]));
-    const Vec12 gradient = tet_volume_constraint_gradient(xs);
     add(tet_volume_constraint_value(xs, v.rest_volume), v.compliance, v.damping, lambda_volume_[c],
-        gradient.dot(stencil_displacement(id)));
-    subtract(id, gradient, lambda_volume_[c]);
+        tet_volume_constraint_gradient(xs).dot(stencil_displacement(id)));
   }
   for (size_t c = 0; c < model_.neo_hookean.size(); ++c) {
     const NeoHookeanTet& t = model_.neo_hookean[c];
     const auto& id = t.particles;
     const Vec12 xs = stack(position(x, id[0]), position(x, id[1]), position(x, id[2]), position(x, id[3]));
     const Mat3 F = deformation_gradient(xs, t.Dm_inv);
-    const Vec12 grad_D = neo_hookean_deviatoric_gradient(xs, t.Dm_inv);
-    const Vec12 grad_H = neo_hookean_hydrostatic_gradient(xs, t.Dm_inv);
     const Vec12 dx = stencil_displacement(id);
     const Vec2& lambda = lambda_neo_hookean_[c];
-    add(neo_hookean_deviatoric_value(F), t.compliance_deviatoric(), t.beta_deviatoric, lambda[0], grad_D.dot(dx));
+    add(neo_hookean_deviatoric_value(F), t.compliance_deviatoric(), t.beta_deviatoric, lambda[0],
+        neo_hookean_deviatoric_gradient(xs, t.Dm_inv).dot(dx));
     add(neo_hookean_hydrostatic_value(F, neo_hookean_gamma(t.mu, t.lambda)), t.compliance_hydrostatic(),
-        t.beta_hydrostatic, lambda[1], grad_H.dot(dx));
-    subtract(id, (grad_D * lambda[0] + grad_H * lambda[1]).eval(), 1.0);
+        t.beta_hydrostatic, lambda[1], neo_hookean_hydrostatic_gradient(xs, t.Dm_inv).dot(dx));
   }
   for (size_t a = 0; a < model_.attachments.size(); ++a) {
     const Attachment& attachment = model_.attachments[a];
     const Vec3 r = (position(x, attachment.particle) - attachment.target) +
                    attachment.compliance / (h * h) * lambda_attachment_[a];
     residual2 += r.squaredNorm();
-    g.row(attachment.particle) -= lambda_attachment_[a].transpose();
   }
+  const Positions impulse = constraint_impulses();
   StepDiagnostics d;
   d.step = step_;
   d.constraint_residual = std::sqrt(residual2);
   for (int i = 0; i < x.rows(); ++i)
-    if (w[i] > 0.0) d.primal_residual += g.row(i).squaredNorm();
+    if (w[i] > 0.0) d.primal_residual += ((x.row(i) - x_predicted_.row(i)) / w[i] - impulse.row(i)).squaredNorm();
   d.primal_residual = std::sqrt(d.primal_residual);
   d.kinetic_energy = kinetic_energy(model_.particles);
   d.gravitational_energy = gravitational_energy(model_);

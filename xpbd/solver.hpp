@@ -83,6 +83,8 @@ class Solver {
   void project_neo_hookean(int c, double h);
   void project_attachments(double h);
   void project_ground();
+  /// Σ_c ∇C_c(x)ᵀλ_c per particle (#P by 3), the constraint forces times h².
+  Positions constraint_impulses() const;
   void check_positions() const;
   template <class Project>
   void for_each_constraint(const Coloring& coloring, Project&& project);

@@ -98,19 +98,19 @@ void check_all_forms(const Positions& x, const Positions& x_start) {
   xpbd::Model model = make_model();
   const double h = 1e-3;
   std::vector<std::unique_ptr<Form>> forms;
-  forms.push_back(make_elastic_form<NeoHookeanKernel>("neo-hookean", model.neo_hookean));
-  forms.push_back(make_elastic_form<TetVolumeKernel>("tet volume", model.volumes));
-  forms.push_back(make_elastic_form<DistanceKernel>("distance", model.distances));
-  forms.push_back(make_elastic_form<AttachmentKernel>("attachment", model.attachments));
-  auto damp_nh = make_damping_form<NeoHookeanKernel>("neo-hookean", model.neo_hookean, h);
-  auto damp_volume = make_damping_form<TetVolumeKernel>("tet volume", model.volumes, h);
-  auto damp_distance = make_damping_form<DistanceKernel>("distance", model.distances, h);
-  damp_nh->set_targets(x_start);
-  damp_volume->set_targets(x_start);
-  damp_distance->set_targets(x_start);
-  forms.push_back(std::move(damp_nh));
-  forms.push_back(std::move(damp_volume));
-  forms.push_back(std::move(damp_distance));
+  forms.push_back(make_constraint_form<NeoHookeanKernel>("neo-hookean", model.neo_hookean));
+  forms.push_back(make_constraint_form<TetVolumeKernel>("tet volume", model.volumes));
+  forms.push_back(make_constraint_form<DistanceKernel>("distance", model.distances));
+  forms.push_back(make_constraint_form<AttachmentKernel>("attachment", model.attachments));
+  auto step_nh = make_constraint_form<NeoHookeanKernel>("neo-hookean step", model.neo_hookean, h);
+  auto step_volume = make_constraint_form<TetVolumeKernel>("tet volume step", model.volumes, h);
+  auto step_distance = make_constraint_form<DistanceKernel>("distance step", model.distances, h);
+  step_nh->set_targets(x_start);
+  step_volume->set_targets(x_start);
+  step_distance->set_targets(x_start);
+  forms.push_back(std::move(step_nh));
+  forms.push_back(std::move(step_volume));
+  forms.push_back(std::move(step_distance));
   auto inertia = std::make_unique<InertiaForm>(model.particles.w);
   inertia->set_target(x_start);
   forms.push_back(std::move(inertia));
@@ -142,23 +142,23 @@ TEST(FormDerivatives, ElasticEnergyEqualsTheXpbdModelEnergy) {
   // One energy, two solvers: the reference's U is the XPBD model's elastic_energy.
   xpbd::Model model = make_model();
   model.particles.x = deformed(model.particles.x, 1e-3, 3);
-  const double U = make_elastic_form<NeoHookeanKernel>("", model.neo_hookean)->value(model.particles.x) +
-                   make_elastic_form<TetVolumeKernel>("", model.volumes)->value(model.particles.x) +
-                   make_elastic_form<DistanceKernel>("", model.distances)->value(model.particles.x);
+  const double U = make_constraint_form<NeoHookeanKernel>("", model.neo_hookean)->value(model.particles.x) +
+                   make_constraint_form<TetVolumeKernel>("", model.volumes)->value(model.particles.x) +
+                   make_constraint_form<DistanceKernel>("", model.distances)->value(model.particles.x);
   model.attachments.clear();
   EXPECT_NEAR(U, xpbd::elastic_energy(model), 1e-12 * std::abs(U));
   const Positions gradient_expected = xpbd::elastic_energy_gradient(model);
   Positions gradient = Positions::Zero(model.particles.size(), 3);
-  make_elastic_form<NeoHookeanKernel>("", model.neo_hookean)->add_gradient(model.particles.x, 1.0, gradient);
-  make_elastic_form<TetVolumeKernel>("", model.volumes)->add_gradient(model.particles.x, 1.0, gradient);
-  make_elastic_form<DistanceKernel>("", model.distances)->add_gradient(model.particles.x, 1.0, gradient);
+  make_constraint_form<NeoHookeanKernel>("", model.neo_hookean)->add_gradient(model.particles.x, 1.0, gradient);
+  make_constraint_form<TetVolumeKernel>("", model.volumes)->add_gradient(model.particles.x, 1.0, gradient);
+  make_constraint_form<DistanceKernel>("", model.distances)->add_gradient(model.particles.x, 1.0, gradient);
   EXPECT_LT(relative_error(gradient, gradient_expected, 1e-12), 1e-12);
 }
 
 TEST(FormDerivatives, ProjectionLeavesAConvexHessianUnchanged) {
   // At rest every elastic Hessian is PSD: projection must not alter it.
   const xpbd::Model model = make_model();
-  const auto form = make_elastic_form<NeoHookeanKernel>("neo-hookean", model.neo_hookean);
+  const auto form = make_constraint_form<NeoHookeanKernel>("neo-hookean", model.neo_hookean);
   const Eigen::MatrixXd exact = hessian_of(*form, model.particles.x, false);
   const Eigen::MatrixXd projected = hessian_of(*form, model.particles.x, true);
   EXPECT_LT(relative_error(exact, projected, 1e-12), 1e-10);
@@ -168,7 +168,7 @@ TEST(FormDerivatives, RigidConstraintIsRejectedWithItsIndex) {
   xpbd::Model model = make_model();
   model.distances[3].compliance = 0.0;
   try {
-    make_elastic_form<DistanceKernel>("distance", model.distances);
+    make_constraint_form<DistanceKernel>("distance", model.distances);
     FAIL() << "expected an error";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("distance constraint 3"), std::string::npos) << e.what();

@@ -77,7 +77,7 @@ TEST(ImplicitSolver, NewtonConvergesFastOnALargeDeflection) {
 
 TEST(SparseHessian, AssemblyDropsPinnedRowsAndColumns) {
   const xpbd::Model model = block(1);
-  const auto form = make_elastic_form<NeoHookeanKernel>("neo-hookean", model.neo_hookean);
+  const auto form = make_constraint_form<NeoHookeanKernel>("neo-hookean", model.neo_hookean);
   std::vector<bool> fixed(model.particles.size(), false);
   fixed[0] = fixed[5] = true;
   const DofMap pinned(fixed), all(std::vector<bool>(model.particles.size(), false));

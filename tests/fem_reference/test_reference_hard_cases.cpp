@@ -18,20 +18,6 @@ double total_energy(const xpbd::Model& model) {
   return xpbd::kinetic_energy(model.particles) + xpbd::gravitational_energy(model) + xpbd::elastic_energy(model);
 }
 
-/// A horizontal chain of n particles 0.1 m apart joined by springs of compliance α, pinned at
-/// particle 0, under gravity; the last particle is `heavy`× heavier.
-xpbd::Model chain(int n, double compliance, double heavy) {
-  xpbd::Model model;
-  model.particles.x = Positions::Zero(n, 3);
-  for (int i = 0; i < n; ++i) model.particles.x(i, 0) = 0.1 * i;
-  model.particles.v = Positions::Zero(n, 3);
-  model.particles.w = Eigen::VectorXd::Ones(n);
-  model.particles.w[n - 1] = 1.0 / heavy;
-  for (int i = 0; i + 1 < n; ++i) model.distances.push_back({{i, i + 1}, 0.1, compliance, 0.0});
-  xpbd::pin_particles(model, {0});
-  return model;
-}
-
 /// Steps the reference and checks every step: converged, finite, energy never above its start
 /// (backward Euler dissipates; gravity's potential is counted). Returns the worst spring strain.
 double run_and_check(xpbd::Model& model, double h, int steps) {
@@ -54,7 +40,7 @@ double run_and_check(xpbd::Model& model, double h, int steps) {
 TEST(ReferenceHardCases, NearRigidChainKeepsItsLength) {
   // α = 1e-12 m/N: springs of 10¹² N/m. The stretch under a swinging 10 kg chain's tension
   // (≲ 10³ N) is ≲ 1e-9 m, i.e. a strain under 1e-8.
-  xpbd::Model model = chain(10, 1e-12, 1.0);
+  xpbd::Model model = xpbd::testing::spring_chain(10, 1e-12, 1.0);
   EXPECT_LT(run_and_check(model, 1.0 / 600, 300), 1e-8);
 }
 
@@ -62,7 +48,7 @@ TEST(ReferenceHardCases, MassRatioOneToTenThousandStaysAccurate) {
   // Newton solves the coupled system directly, so the heavy end does not stretch the chain
   // the way Gauss–Seidel lets it: the swinging 10⁴ kg end pulls with ≲ 3·10⁴·g ≈ 3·10⁵ N,
   // which on α = 1e-9 m/N is a physical strain ≲ 3e-3.
-  xpbd::Model model = chain(10, 1e-9, 1e4);
+  xpbd::Model model = xpbd::testing::spring_chain(10, 1e-9, 1e4);
   EXPECT_LT(run_and_check(model, 1.0 / 600, 300), 5e-3);
 }
 

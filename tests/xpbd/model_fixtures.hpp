@@ -1,4 +1,4 @@
-// Small models shared by the XPBD solver tests: an elastic block and a cantilever.
+// Small models shared by the solver tests: an elastic block, a cantilever, a spring chain.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -28,6 +28,20 @@ inline Model neo_hookean_cantilever(int nx, double young, double rayleigh_time, 
   add_neo_hookean_tets(model, mesh, lame_from_young_poisson(young, 0.3), rayleigh_time);
   pin_particles(model, vertices_at_min_x(mesh.V));
   if (tip) *tip = box_vertex_index(nx, n, nx, 1, 1);
+  return model;
+}
+
+/// A horizontal chain of `n` particles 0.1 m apart joined by distance constraints of
+/// compliance α, pinned at particle 0, under gravity; the last particle is `heavy`× heavier.
+inline Model spring_chain(int n, double compliance, double heavy) {
+  Model model;
+  model.particles.x = Positions::Zero(n, 3);
+  for (int i = 0; i < n; ++i) model.particles.x(i, 0) = 0.1 * i;
+  model.particles.v = Positions::Zero(n, 3);
+  model.particles.w = Eigen::VectorXd::Ones(n);
+  model.particles.w[n - 1] = 1.0 / heavy;
+  for (int i = 0; i + 1 < n; ++i) model.distances.push_back({{i, i + 1}, 0.1, compliance, 0.0});
+  pin_particles(model, {0});
   return model;
 }
 

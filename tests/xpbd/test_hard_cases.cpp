@@ -13,20 +13,7 @@ namespace {
 
 using testing::neo_hookean_block;
 using testing::neo_hookean_cantilever;
-
-/// A horizontal chain of `n` particles 0.1 m apart joined by distance constraints of
-/// compliance α, pinned at particle 0, under gravity; the last particle is `heavy`× heavier.
-Model chain(int n, double compliance, double heavy) {
-  Model model;
-  model.particles.x = Positions::Zero(n, 3);
-  for (int i = 0; i < n; ++i) model.particles.x(i, 0) = 0.1 * i;
-  model.particles.v = Positions::Zero(n, 3);
-  model.particles.w = Eigen::VectorXd::Ones(n);
-  model.particles.w[n - 1] = 1.0 / heavy;
-  for (int i = 0; i + 1 < n; ++i) model.distances.push_back({{i, i + 1}, 0.1, compliance, 0.0});
-  pin_particles(model, {0});
-  return model;
-}
+using testing::spring_chain;
 
 double max_relative_stretch(const Model& model) {
   double worst = 0.0;
@@ -52,7 +39,7 @@ void swing_and_check(Model& model, int substeps, int iterations) {
 }
 
 TEST(HardCases, RigidChainKeepsItsLengthAndLosesEnergy) {
-  Model model = chain(10, 0.0, 1.0);
+  Model model = spring_chain(10, 0.0, 1.0);
   swing_and_check(model, 10, 5);
   EXPECT_LT(max_relative_stretch(model), 5e-3);  // five iterations: not fully converged
 }
@@ -62,7 +49,7 @@ TEST(HardCases, NearRigidChainKeepsItsLength) {
   // energy ½C²/α is not a useful measure here: five iterations leave residual stretches of
   // ~1e-5 m, which 1/α turns into tens of joules that the multipliers never carry. So the
   // check is on kinetic plus gravitational energy, which must not grow.
-  Model model = chain(10, 1e-12, 1.0);
+  Model model = spring_chain(10, 1e-12, 1.0);
   Solver solver(model, {.time_step = 1.0 / 60, .substeps = 10, .iterations = 5});
   solver.step();
   const double initial = kinetic_energy(model.particles) + gravitational_energy(model);
@@ -76,7 +63,7 @@ TEST(HardCases, NearRigidChainKeepsItsLength) {
 }
 
 TEST(HardCases, MassRatioOneToTenThousandStaysFiniteAndBounded) {
-  Model model = chain(10, 0.0, 1e4);
+  Model model = spring_chain(10, 0.0, 1e4);
   swing_and_check(model, 20, 10);
   // Gauss–Seidel converges slowly when one mass dominates: the chain stretches, but boundedly.
   EXPECT_LT(max_relative_stretch(model), 0.5);

@@ -1,0 +1,17 @@
+# Runs `rice study convergence --quick` into OUT and checks that its CSV, plots and run info
+# are there. Called by CTest (tests/CMakeLists.txt) with -DRICE=<rice binary> -DOUT=<folder>.
+file(REMOVE_RECURSE "${OUT}")
+execute_process(COMMAND "${RICE}" study convergence --quick --out "${OUT}" RESULT_VARIABLE result)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "rice study convergence --quick exited with ${result}")
+endif()
+foreach(name convergence.csv run_info.txt)
+  if(NOT EXISTS "${OUT}/${name}")
+    message(FATAL_ERROR "missing ${OUT}/${name}")
+  endif()
+endforeach()
+file(STRINGS "${OUT}/convergence.csv" rows)
+list(LENGTH rows count)
+if(count LESS 50)
+  message(FATAL_ERROR "convergence.csv has only ${count} lines")
+endif()
