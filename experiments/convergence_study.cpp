@@ -90,15 +90,24 @@ ConvergenceRun describe(const Case& c, const char* method, int tets) {
   return run;
 }
 
+/// The position-based variants the study compares.
+enum class Variant { kXpbd, kXpbdPrimalCorrection, kPbd };
+
+const char* variant_name(Variant v) {
+  return v == Variant::kXpbd ? "xpbd" : v == Variant::kXpbdPrimalCorrection ? "xpbd-primal" : "pbd";
+}
+
 ConvergenceRun run_position_based(const ConvergenceSettings& s, const Reference& ref, int iterations,
-                                  xpbd::Method method) {
+                                  Variant variant) {
   const Case& c = ref.setting;
-  ConvergenceRun run = describe(c, method == xpbd::Method::kXpbd ? "xpbd" : "pbd", ref.tets);
+  ConvergenceRun run = describe(c, variant_name(variant), ref.tets);
   run.iterations = iterations;
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   xpbd::Model model = make_scene(c.scene, c.body, s.bar, c.resolution, c.rayleigh_time);
   xpbd::SolverSettings settings{.time_step = s.frame, .substeps = c.substeps, .iterations = iterations,
-                                .method = method, .execution = xpbd::Execution::kSerial};
+                                .method = variant == Variant::kPbd ? xpbd::Method::kPbd : xpbd::Method::kXpbd,
+                                .execution = xpbd::Execution::kSerial,
+                                .primal_correction = variant == Variant::kXpbdPrimalCorrection};
   fem::TrajectoryError error;
   const auto start = Clock::now();
   try {
@@ -139,15 +148,15 @@ ConvergenceRun run_position_based(const ConvergenceSettings& s, const Reference&
   return run;
 }
 
-/// Marks the XPBD runs that no other XPBD run of the same panel beats in both error and cost.
+/// Marks the runs that no other run of the same method and panel beats in both error and cost.
 void mark_pareto_fronts(std::vector<ConvergenceRun>& runs) {
   const auto panel = [](const ConvergenceRun& r) {
-    return std::make_tuple(r.scene, r.model, r.rayleigh_time, r.resolution);
+    return std::make_tuple(r.scene, r.model, r.method, r.rayleigh_time, r.resolution);
   };
   for (ConvergenceRun& r : runs) {
-    if (r.method != "xpbd" || r.failed) continue;
+    if (r.method == "reference" || r.failed) continue;
     r.pareto = std::none_of(runs.begin(), runs.end(), [&](const ConvergenceRun& o) {
-      return &o != &r && o.method == "xpbd" && !o.failed && panel(o) == panel(r) &&
+      return &o != &r && !o.failed && panel(o) == panel(r) &&
              o.wall_per_sim_second <= r.wall_per_sim_second && o.trajectory_error <= r.trajectory_error &&
              (o.wall_per_sim_second < r.wall_per_sim_second || o.trajectory_error < r.trajectory_error);
     });
@@ -223,20 +232,26 @@ std::vector<ConvergenceRun> run_convergence_study(const ConvergenceSettings& s) 
   struct Job {
     size_t reference;
     int iterations;
-    xpbd::Method method;
+    Variant variant;
   };
   std::vector<Job> jobs;
   for (size_t i = 0; i < cases.size(); ++i) {
-    const bool springs = cases[i].body == BodyModel::kSprings;
-    for (const int k : cases[i].resolution == s.grid_resolution ? s.iterations : s.resolution_iterations)
-      jobs.push_back({i, k, springs ? xpbd::Method::kPbd : xpbd::Method::kXpbd});
+    const bool grid = cases[i].resolution == s.grid_resolution;
+    for (const int k : grid ? s.iterations : s.resolution_iterations) {
+      if (cases[i].body == BodyModel::kSprings) {
+        jobs.push_back({i, k, Variant::kPbd});
+        continue;
+      }
+      jobs.push_back({i, k, Variant::kXpbd});
+      if (grid) jobs.push_back({i, k, Variant::kXpbdPrimalCorrection});
+    }
   }
   std::vector<ConvergenceRun> runs(jobs.size());
   {
     Progress progress("convergence: position-based runs", static_cast<int>(jobs.size()));
     std::atomic<int> done = 0;
     tbb::parallel_for(size_t{0}, jobs.size(), [&](size_t j) {
-      runs[j] = run_position_based(s, references[jobs[j].reference], jobs[j].iterations, jobs[j].method);
+      runs[j] = run_position_based(s, references[jobs[j].reference], jobs[j].iterations, jobs[j].variant);
       progress.update(++done);
     });
     progress.finish();
@@ -294,7 +309,8 @@ do for [scene in 'hanging-cantilever twisted-bar'] {
   do for [damped = 0:1] {
     set title sprintf('%s, %s', scene, damped ? 'Rayleigh damping' : 'no damping')
     plot 'convergence.csv' using (sel(scene, 'xpbd', damped) ? $10 : 1/0):11:(log($7)/log(2)) with points pt 7 ps 1.2 palette title 'XPBD (N, K grid)', \
-         '' using (sel(scene, 'xpbd', damped) && $16 == 1 ? $10 : 1/0):11 with points pt 4 ps 2.2 lw 2 lc rgb 'black' title 'Pareto front', \
+         '' using (sel(scene, 'xpbd', damped) && $16 == 1 ? $10 : 1/0):11 with points pt 4 ps 2.2 lw 2 lc rgb 'black' title 'XPBD Pareto front', \
+         '' using (sel(scene, 'xpbd-primal', damped) ? $10 : 1/0):11 with points pt 9 ps 1.4 lc rgb 'dark-green' title 'XPBD + primal correction', \
          '' using (sel(scene, 'pbd', damped) ? $10 : 1/0):11 with points pt 6 ps 1.2 lc rgb 'red' title 'PBD (springs, vs its reference)'
   }
 }

@@ -4,8 +4,9 @@
 // For each scene (convergence_scenes.hpp), with and without Rayleigh damping:
 //  1. reference trajectories: backward Euler by Newton at h = frame / N for every N, solved to
 //     a tight relative gradient tolerance;
-//  2. XPBD over N substeps per frame × K iterations per substep (and PBD on a springs model
-//     against its own reference, for contrast). Error: RMS vertex distance to the reference
+//  2. XPBD over N substeps per frame × K iterations per substep, with and without the
+//     primal-residual correction (xpbd/solver.hpp; method "xpbd-primal"), and PBD on a
+//     springs model against its own reference, for contrast. Error: RMS vertex distance to the reference
 //     over the frames of the trajectory, relative to the bar's length. Cost: wall time per
 //     simulated second (runs execute side by side, one per core, each single-threaded);
 //  3. one-step figures from reference states every few frames: the distance of XPBD's step to
@@ -46,7 +47,7 @@ struct ConvergenceSettings {
 
 /// One row of convergence.csv.
 struct ConvergenceRun {
-  std::string scene, model, method;  ///< method: "xpbd", "pbd" or "reference"
+  std::string scene, model, method;  ///< "xpbd", "xpbd-primal", "pbd" or "reference"
   int resolution = 0, tets = 0;
   double rayleigh_time = 0.0;
   int substeps = 0, iterations = 0;  ///< iterations: K, or mean Newton iterations per step
@@ -57,7 +58,7 @@ struct ConvergenceRun {
   double step_distance = 0.0;        ///< mean one-step RMS distance to Newton / L
   double primal_residual = 0.0;      ///< mean ‖g‖ of the one-step samples [kg m]
   double constraint_residual = 0.0;  ///< mean ‖C + α̃λ + γ∇CΔx‖ of the samples
-  bool pareto = false;               ///< on the error–cost Pareto front of its panel
+  bool pareto = false;               ///< on the error–cost front of its method and panel
 };
 
 std::vector<ConvergenceRun> run_convergence_study(const ConvergenceSettings& settings);

@@ -70,6 +70,8 @@ void Solver::substep(double h) {
   lambda_distance_.assign(model_.distances.size(), 0.0);
   lambda_volume_.assign(model_.volumes.size(), 0.0);
   lambda_neo_hookean_.assign(model_.neo_hookean.size(), Vec2::Zero());
+  if (settings_.primal_correction)
+    impulse_neo_hookean_.assign(model_.neo_hookean.size(), Eigen::Matrix<double, 3, 4>::Zero());
   lambda_attachment_.assign(model_.attachments.size(), Vec3::Zero());
   if (settings_.diagnostics) x_predicted_ = model_.particles.x;
   for (int k = 0; k < settings_.iterations; ++k) iterate(h);
@@ -181,16 +183,32 @@ void Solver::project_neo_hookean(int c, double h) {
   const auto& id = t.particles;
   const double wk[4] = {w[id[0]], w[id[1]], w[id[2]], w[id[3]]};
   if (wk[0] + wk[1] + wk[2] + wk[3] == 0.0) return;
-  const Mat3 F = edge_matrix(position(x, id[0]), position(x, id[1]), position(x, id[2]),
-                             position(x, id[3])) * t.Dm_inv;
-  const Vec2 C(neo_hookean_deviatoric_value(F),
-               neo_hookean_hydrostatic_value(F, neo_hookean_gamma(t.mu, t.lambda)));
   // Gradients for x1..x3 are the columns of (∂C/∂F) Dm⁻ᵀ; x0 gets minus their sum.
   Eigen::Matrix<double, 3, 4> grad_D, grad_H;
-  grad_D.rightCols<3>() = neo_hookean_deviatoric_dF(F) * t.Dm_inv.transpose();
-  grad_H.rightCols<3>() = neo_hookean_hydrostatic_dF(F) * t.Dm_inv.transpose();
-  grad_D.col(0) = -grad_D.rightCols<3>().rowwise().sum();
-  grad_H.col(0) = -grad_H.rightCols<3>().rowwise().sum();
+  const auto deformation = [&] {
+    return Mat3(edge_matrix(position(x, id[0]), position(x, id[1]), position(x, id[2]), position(x, id[3])) *
+                t.Dm_inv);
+  };
+  const auto gradients = [&](const Mat3& F) {
+    grad_D.rightCols<3>() = neo_hookean_deviatoric_dF(F) * t.Dm_inv.transpose();
+    grad_H.rightCols<3>() = neo_hookean_hydrostatic_dF(F) * t.Dm_inv.transpose();
+    grad_D.col(0) = -grad_D.rightCols<3>().rowwise().sum();
+    grad_H.col(0) = -grad_H.rightCols<3>().rowwise().sum();
+  };
+  const bool correct = settings_.primal_correction && settings_.method == Method::kXpbd;
+  if (correct) {
+    // Re-apply the accumulated λ along the current gradients (see SolverSettings).
+    gradients(deformation());
+    const Vec2& lambda = lambda_neo_hookean_[c];
+    const Eigen::Matrix<double, 3, 4> impulse = grad_D * lambda[0] + grad_H * lambda[1];
+    for (int k = 0; k < 4; ++k)
+      position(x, id[k]) += wk[k] * (impulse.col(k) - impulse_neo_hookean_[c].col(k));
+    impulse_neo_hookean_[c] = impulse;
+  }
+  const Mat3 F = deformation();
+  const Vec2 C(neo_hookean_deviatoric_value(F),
+               neo_hookean_hydrostatic_value(F, neo_hookean_gamma(t.mu, t.lambda)));
+  gradients(F);
   Mat2 gwg = Mat2::Zero();
   Vec2 grad_dot_dx = Vec2::Zero();
   for (int k = 0; k < 4; ++k) {
@@ -209,6 +227,7 @@ void Solver::project_neo_hookean(int c, double h) {
   lambda_neo_hookean_[c] += delta_lambda;
   for (int k = 0; k < 4; ++k)
     position(x, id[k]) += wk[k] * (grad_D.col(k) * delta_lambda[0] + grad_H.col(k) * delta_lambda[1]);
+  if (correct) impulse_neo_hookean_[c] += grad_D * delta_lambda[0] + grad_H * delta_lambda[1];
 }
 
 void Solver::project_attachments(double h) {
