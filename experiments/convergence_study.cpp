@@ -299,6 +299,7 @@ set datafile separator ','
 set datafile missing 'nan'
 set multiplot layout 2,2
 set logscale xy
+set format y '%.0e'
 set xlabel 'wall time per simulated second [s]'
 set ylabel 'RMS vertex error / length'
 set cblabel 'log2 substeps per frame'
