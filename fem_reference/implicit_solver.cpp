@@ -8,8 +8,8 @@
 namespace rice::fem {
 namespace {
 
-template <class Form>
-void append_if_used(std::vector<WeightedForm>& forms, const Form* form, double weight) {
+template <class ConcreteForm>
+void append_if_used(std::vector<WeightedForm>& forms, const ConcreteForm* form, double weight) {
   if (form && form->element_count() > 0) forms.push_back({form, weight});
 }
 
@@ -44,9 +44,8 @@ ImplicitSolver::ImplicitSolver(xpbd::Model& model, const ImplicitSettings& setti
   append_if_used(dynamic, &loads_, h * h);
   append_if_used(quasi_static, &loads_, 1.0);
   const auto add_elastic = [&](auto form) {
-    if (form->element_count() == 0) return;
-    quasi_static.push_back({form.get(), 1.0});
-    elastic_.push_back(std::move(form));
+    append_if_used(quasi_static, form.get(), 1.0);
+    static_forms_.push_back(std::move(form));
   };
   add_elastic(make_constraint_form<NeoHookeanKernel>("neo-hookean", model.neo_hookean));
   add_elastic(make_constraint_form<TetVolumeKernel>("tet volume", model.volumes));

@@ -74,7 +74,7 @@ class ImplicitSolver {
   InertiaForm inertia_;
   LoadForm loads_;
   /// U alone, for the quasi-static solve; U + Ψ per constraint type, for the time step.
-  std::vector<std::unique_ptr<Form>> elastic_;
+  std::vector<std::unique_ptr<Form>> static_forms_;
   std::unique_ptr<ConstraintPotentialForm<NeoHookeanKernel>> step_neo_hookean_;
   std::unique_ptr<ConstraintPotentialForm<TetVolumeKernel>> step_volume_;
   std::unique_ptr<ConstraintPotentialForm<DistanceKernel>> step_distance_;
