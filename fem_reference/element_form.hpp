@@ -38,7 +38,7 @@ class ElementForm : public Form {
   }
 
   void add_gradient(const Positions& x, double weight, Positions& gradient) const override {
-    std::vector<LocalVector> local(kChunk);
+    std::vector<LocalVector> local(std::min(kChunk, element_count()));
     for (int begin = 0; begin < element_count(); begin += kChunk) {  // bounded buffer
       const int end = std::min(begin + kChunk, element_count());
       tbb::parallel_for(begin, end, [&](int e) { local[e - begin] = element_gradient(e, gather(x, e)); });
@@ -52,7 +52,7 @@ class ElementForm : public Form {
 
   void add_hessian(const Positions& x, double weight, bool project,
                    SparseHessian& hessian) const override {
-    std::vector<LocalMatrix> local(kChunk);
+    std::vector<LocalMatrix> local(std::min(kChunk, element_count()));
     for (int begin = 0; begin < element_count(); begin += kChunk) {
       const int end = std::min(begin + kChunk, element_count());
       tbb::parallel_for(begin, end, [&](int e) {

@@ -61,7 +61,6 @@ class ImplicitSolver {
   /// The Newton report of the last step() or solve_static().
   const NewtonReport& report() const { return report_; }
   const ImplicitSettings& settings() const { return settings_; }
-  long steps_taken() const { return step_; }
 
  private:
   void hold_rigid_attachments();

@@ -75,8 +75,6 @@ class NewtonSolver {
   double energy(const Positions& x) const;
   /// ∇E over the free DOFs.
   Eigen::VectorXd gradient(const Positions& x) const;
-  const DofMap& dofs() const { return dofs_; }
-  const NewtonSettings& settings() const { return settings_; }
 
  private:
   std::vector<Stencils> collect_stencils() const;

@@ -18,7 +18,6 @@ class TrajectoryError {
   void add_frame(const Positions& a, const Positions& b);
   double rms() const;
   double max_frame_rms() const { return max_frame_rms_; }
-  int frames() const { return frames_; }
 
  private:
   double sum_of_squares_ = 0.0;  ///< Σ over frames of the frame's mean squared distance

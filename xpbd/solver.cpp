@@ -30,6 +30,11 @@ Eigen::Map<const Vec3> position(const Positions& x, int i) {
   return Eigen::Map<const Vec3>(x.data() + 3 * i);
 }
 
+/// The 12 coordinates of a tetrahedron's four particles.
+Vec12 tet_stencil(const Positions& x, const std::array<int, 4>& id) {
+  return stack(position(x, id[0]), position(x, id[1]), position(x, id[2]), position(x, id[3]));
+}
+
 }  // namespace
 
 Solver::Solver(Model& model, const SolverSettings& settings) : model_(model), settings_(settings) {
@@ -153,7 +158,7 @@ void Solver::project_volume(int c, double h) {
   Positions& x = model_.particles.x;
   const Eigen::VectorXd& w = model_.particles.w;
   const auto& id = v.particles;
-  const Vec12 xs = stack(position(x, id[0]), position(x, id[1]), position(x, id[2]), position(x, id[3]));
+  const Vec12 xs = tet_stencil(x, id);
   const double C = tet_volume_constraint_value(xs, v.rest_volume);
   const Vec12 g = tet_volume_constraint_gradient(xs);
   double grad_w_grad = 0.0, grad_dot_dx = 0.0;
@@ -291,20 +296,17 @@ Positions Solver::constraint_impulses() const {
     for (size_t k = 0; k < ids.size(); ++k)
       impulse.row(ids[k]) += lambda * gradient.template segment<3>(3 * k).transpose();
   };
-  const auto stencil = [&](const std::array<int, 4>& id) {
-    return stack(position(x, id[0]), position(x, id[1]), position(x, id[2]), position(x, id[3]));
-  };
   for (size_t c = 0; c < model_.distances.size(); ++c) {
     const DistanceConstraint& d = model_.distances[c];
     add(d.particles, distance_constraint_gradient(position(x, d.particles[0]), position(x, d.particles[1])),
         lambda_distance_[c]);
   }
   for (size_t c = 0; c < model_.volumes.size(); ++c)
-    add(model_.volumes[c].particles, tet_volume_constraint_gradient(stencil(model_.volumes[c].particles)),
+    add(model_.volumes[c].particles, tet_volume_constraint_gradient(tet_stencil(x, model_.volumes[c].particles)),
         lambda_volume_[c]);
   for (size_t c = 0; c < model_.neo_hookean.size(); ++c) {
     const NeoHookeanTet& t = model_.neo_hookean[c];
-    const Vec12 xs = stencil(t.particles);
+    const Vec12 xs = tet_stencil(x, t.particles);
     const Vec2& lambda = lambda_neo_hookean_[c];
     add(t.particles, (neo_hookean_deviatoric_gradient(xs, t.Dm_inv) * lambda[0] +
                       neo_hookean_hydrostatic_gradient(xs, t.Dm_inv) * lambda[1]).eval(), 1.0);
@@ -342,14 +344,14 @@ StepDiagnostics Solver::measure(double h) const {
   for (size_t c = 0; c < model_.volumes.size(); ++c) {
     const TetVolumeConstraint& v = model_.volumes[c];
     const auto& id = v.particles;
-    const Vec12 xs = stack(position(x, id[0]), position(x, id[1]), position(x, id[2]), position(x, id[3]));
+    const Vec12 xs = tet_stencil(x, id);
     add(tet_volume_constraint_value(xs, v.rest_volume), v.compliance, v.damping, lambda_volume_[c],
         tet_volume_constraint_gradient(xs).dot(stencil_displacement(id)));
   }
   for (size_t c = 0; c < model_.neo_hookean.size(); ++c) {
     const NeoHookeanTet& t = model_.neo_hookean[c];
     const auto& id = t.particles;
-    const Vec12 xs = stack(position(x, id[0]), position(x, id[1]), position(x, id[2]), position(x, id[3]));
+    const Vec12 xs = tet_stencil(x, id);
     const Mat3 F = deformation_gradient(xs, t.Dm_inv);
     const Vec12 dx = stencil_displacement(id);
     const Vec2& lambda = lambda_neo_hookean_[c];
