@@ -1,0 +1,174 @@
+// Topology checks name the defect; readers and writers round-trip; bad files are refused.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <unistd.h>
+
+#include "grains/mesh_io.hpp"
+#include "grains/mesh_topology.hpp"
+#include "grains/surface_measures.hpp"
+
+namespace rice::grains {
+namespace {
+
+SurfaceMesh unit_tetrahedron() {
+  SurfaceMesh mesh;
+  mesh.V.resize(4, 3);
+  mesh.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
+  mesh.F.resize(4, 3);
+  mesh.F << 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3;
+  return mesh;
+}
+
+// Two tetrahedra sharing only vertex 0: closed and edge-manifold, but pinched at vertex 0.
+SurfaceMesh bowtie() {
+  SurfaceMesh a = unit_tetrahedron();
+  SurfaceMesh mesh;
+  mesh.V.resize(7, 3);
+  mesh.V.topRows(4) = a.V;
+  mesh.V.bottomRows(3) = -a.V.bottomRows(3);
+  mesh.F.resize(8, 3);
+  mesh.F.topRows(4) = a.F;
+  // The mirror image of the first tetrahedron through vertex 0; mirroring reverses the
+  // winding, so its faces are flipped back to outward.
+  Triangles mirrored = a.F;
+  for (Eigen::Index f = 0; f < mirrored.rows(); ++f) {
+    for (int k = 0; k < 3; ++k)
+      if (mirrored(f, k) > 0) mirrored(f, k) += 3;
+    std::swap(mirrored(f, 1), mirrored(f, 2));
+  }
+  mesh.F.bottomRows(4) = mirrored;
+  return mesh;
+}
+
+std::filesystem::path temporary_folder() {
+  const auto folder = std::filesystem::temp_directory_path() / ("rice-grains-io-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  return folder;
+}
+
+TEST(MeshTopology, TetrahedronIsClosedManifoldWithPositiveVolume) {
+  const SurfaceMesh mesh = unit_tetrahedron();
+  EXPECT_FALSE(closed_manifold_defect(mesh).has_value());
+  EXPECT_NEAR(enclosed_volume(mesh), 1.0 / 6.0, 1e-15);
+  EXPECT_EQ(connected_component_count(mesh), 1);
+}
+
+TEST(MeshTopology, MissingFaceIsReportedAsAHoleWithItsEdge) {
+  SurfaceMesh mesh = unit_tetrahedron();
+  mesh.F.conservativeResize(3, 3);
+  const auto defect = closed_manifold_defect(mesh);
+  ASSERT_TRUE(defect.has_value());
+  EXPECT_NE(defect->find("not closed"), std::string::npos) << *defect;
+  EXPECT_NE(defect->find("edge ("), std::string::npos) << *defect;
+}
+
+TEST(MeshTopology, FlippedFaceIsReportedAsInconsistentOrientation) {
+  SurfaceMesh mesh = unit_tetrahedron();
+  std::swap(mesh.F(3, 1), mesh.F(3, 2));
+  const auto defect = closed_manifold_defect(mesh);
+  ASSERT_TRUE(defect.has_value());
+  EXPECT_NE(defect->find("not consistently oriented"), std::string::npos) << *defect;
+}
+
+TEST(MeshTopology, EdgeWithThreeFacesIsNotManifold) {
+  SurfaceMesh mesh = unit_tetrahedron();
+  mesh.V.conservativeResize(5, 3);
+  mesh.V.row(4) << 1, 1, 1;
+  mesh.F.conservativeResize(5, 3);
+  mesh.F.row(4) << 1, 2, 4;
+  const auto defect = closed_manifold_defect(mesh);
+  ASSERT_TRUE(defect.has_value());
+  EXPECT_NE(defect->find("not manifold"), std::string::npos) << *defect;
+}
+
+TEST(MeshTopology, PinchedVertexIsNamed) {
+  const SurfaceMesh mesh = bowtie();
+  const auto defect = closed_manifold_defect(mesh);
+  ASSERT_TRUE(defect.has_value());
+  EXPECT_NE(defect->find("vertex 0 "), std::string::npos) << *defect;
+  EXPECT_THROW(require_closed_manifold(mesh, "bowtie.obj"), std::invalid_argument);
+}
+
+TEST(MeshTopology, IndexOutOfRangeAndDegenerateFacesAreNamed) {
+  SurfaceMesh mesh = unit_tetrahedron();
+  mesh.F(2, 1) = 9;
+  EXPECT_NE(closed_manifold_defect(mesh)->find("face 2 refers to vertex 9"), std::string::npos);
+  mesh = unit_tetrahedron();
+  mesh.F(1, 2) = mesh.F(1, 0);
+  EXPECT_NE(closed_manifold_defect(mesh)->find("face 1 repeats a vertex"), std::string::npos);
+}
+
+TEST(MeshIo, ReadsObjOffAndAsciiPlyWithPolygons) {
+  const auto folder = temporary_folder();
+  // A unit cube as six quads, in three formats.
+  const std::string vertices = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n";
+  const int quads[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
+  {
+    std::ofstream obj(folder / "cube.obj");
+    obj << "# cube\n";
+    std::istringstream lines(vertices);
+    for (std::string line; std::getline(lines, line);) obj << "v " << line << "\n";
+    for (const auto& q : quads) obj << "f " << q[0] + 1 << "/1 " << q[1] + 1 << "//2 " << q[2] + 1 << " " << q[3] + 1 << "\n";
+    std::ofstream off(folder / "cube.OFF");
+    off << "OFF\n# comment\n8 6 0\n" << vertices;
+    for (const auto& q : quads) off << "4 " << q[0] << " " << q[1] << " " << q[2] << " " << q[3] << "\n";
+    std::ofstream ply(folder / "cube.ply");
+    ply << "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\nproperty float z\n"
+        << "element face 6\nproperty list uchar int vertex_indices\nend_header\n" << vertices;
+    for (const auto& q : quads) ply << "4 " << q[0] << " " << q[1] << " " << q[2] << " " << q[3] << "\n";
+  }
+  for (const char* name : {"cube.obj", "cube.OFF", "cube.ply"}) {
+    const SurfaceMesh mesh = read_surface_mesh(folder / name);
+    EXPECT_EQ(mesh.V.rows(), 8) << name;
+    EXPECT_EQ(mesh.F.rows(), 12) << name;
+    EXPECT_FALSE(closed_manifold_defect(mesh).has_value()) << name;
+    EXPECT_NEAR(enclosed_volume(mesh), 1.0, 1e-12) << name;
+  }
+  std::filesystem::remove_all(folder);
+}
+
+TEST(MeshIo, BinaryPlyAndMeditRoundTripExactly) {
+  const auto folder = temporary_folder();
+  SurfaceMesh surface = unit_tetrahedron();
+  surface.V *= 1.2345678901234567e-3;
+  write_ply(folder / "t.ply", surface);
+  const SurfaceMesh back = read_surface_mesh(folder / "t.ply");
+  EXPECT_EQ(back.V, surface.V);
+  EXPECT_EQ(back.F, surface.F);
+
+  VolumeMesh volume{surface.V, Tets(1, 4)};
+  volume.T << 0, 1, 2, 3;
+  write_medit(folder / "t.mesh", volume);
+  const VolumeMesh volume_back = read_medit(folder / "t.mesh");
+  EXPECT_EQ(volume_back.V, volume.V);
+  EXPECT_EQ(volume_back.T, volume.T);
+  EXPECT_FALSE(std::filesystem::exists(folder / "t.ply.partial"));
+  std::filesystem::remove_all(folder);
+}
+
+TEST(MeshIo, BadFilesAreRefusedWithFileAndLine) {
+  const auto folder = temporary_folder();
+  std::ofstream(folder / "bad.obj") << "v 0 0 0\nv 1 0\n";
+  std::ofstream(folder / "range.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n";
+  std::ofstream(folder / "shape.stl") << "solid\n";
+  const auto message = [&](const char* name) {
+    try {
+      read_surface_mesh(folder / name);
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message("bad.obj").find("bad.obj:2"), std::string::npos) << message("bad.obj");
+  EXPECT_NE(message("range.obj").find("refers to vertex 6"), std::string::npos) << message("range.obj");
+  EXPECT_NE(message("shape.stl").find("unknown mesh extension"), std::string::npos);
+  EXPECT_NE(message("missing.ply").find("cannot open"), std::string::npos);
+  std::filesystem::remove_all(folder);
+}
+
+}  // namespace
+}  // namespace rice::grains
