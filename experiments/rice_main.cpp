@@ -1,4 +1,4 @@
-// The `rice` command line: one entry point for studies (and, later, figures and scenes).
+// The `rice` command line: one entry point for studies and figures (and, later, scenes).
 // Each subcommand is a thin wrapper over a driver in this folder.
 #include <CLI/CLI.hpp>
 #include <tbb/global_control.h>
@@ -9,6 +9,7 @@
 
 #include "experiments/convergence_study.hpp"
 #include "experiments/oscillator_study.hpp"
+#include "experiments/water_absorption_figure.hpp"
 #include "experiments/xpbd_stiffness_study.hpp"
 
 int main(int argc, char** argv) {
@@ -59,6 +60,18 @@ int main(int argc, char** argv) {
                                                      "tau of the damped runs [s]")
       ->check(CLI::PositiveNumber)->capture_default_str();
 
+  CLI::App* figure = app.add_subcommand("figure", "regenerate a figure of the paper");
+  figure->require_subcommand(1);
+
+  WaterAbsorptionFigureSettings absorption;
+  std::string absorption_out = "out/figure11";
+  CLI::App* figure11_cmd =
+      figure->add_subcommand("11", "water absorption vs soaking time and the damping law of eq. 4");
+  figure11_cmd->add_option("--out", absorption_out, "output folder")->capture_default_str();
+  figure11_cmd->add_option("--table", absorption.table,
+                           "absorption CSV (temperature_c,soak_minutes,absorption_percent); default: shipped table")
+      ->check(CLI::ExistingFile);
+
   CLI11_PARSE(app, argc, argv);
   std::unique_ptr<tbb::global_control> limit;
   if (threads > 0)
@@ -82,6 +95,7 @@ int main(int argc, char** argv) {
       if (tau_opt->count()) settings.rayleigh_time = convergence.rayleigh_time;
       convergence_study_command(settings, convergence_out);
     }
+    if (*figure11_cmd) water_absorption_figure_command(absorption, absorption_out);
   } catch (const CLI::Error& e) {
     return app.exit(e);
   } catch (const std::exception& e) {
