@@ -1,0 +1,119 @@
+// Barycentric embedding (see embedding.hpp). Brute force over tets: simulation meshes have
+// tens of tets, so a spatial index would cost more than it saves.
+#include "grains/embedding.hpp"
+
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <vector>
+
+#include <tbb/parallel_for.h>
+
+namespace rice::grains {
+namespace {
+
+// A boundary face of the mesh (a face used by one tet) and that tet.
+struct BoundaryFace {
+  Eigen::Vector3i corners;
+  int tet;
+};
+
+std::vector<BoundaryFace> boundary_faces(const Tets& T) {
+  constexpr int faces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  std::map<std::array<int, 3>, std::pair<int, int>> count;  // sorted corners -> (uses, tet)
+  std::map<std::array<int, 3>, Eigen::Vector3i> oriented;
+  for (int t = 0; t < static_cast<int>(T.rows()); ++t)
+    for (const auto& f : faces) {
+      std::array<int, 3> key = {T(t, f[0]), T(t, f[1]), T(t, f[2])};
+      const Eigen::Vector3i corners(key[0], key[1], key[2]);
+      std::sort(key.begin(), key.end());
+      auto& entry = count[key];
+      ++entry.first;
+      entry.second = t;
+      oriented[key] = corners;
+    }
+  std::vector<BoundaryFace> boundary;
+  for (const auto& [key, entry] : count)
+    if (entry.first == 1) boundary.push_back({oriented[key], entry.second});
+  return boundary;
+}
+
+}  // namespace
+
+Eigen::Vector4d barycentric_coordinates(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  Eigen::Matrix3d edges;
+  edges << b - a, c - a, d - a;
+  const Vec3 w = edges.partialPivLu().solve(p - a);
+  return {1.0 - w.sum(), w.x(), w.y(), w.z()};
+}
+
+double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 normal = (b - a).cross(c - a);
+  const double area2 = normal.squaredNorm();
+  if (area2 > 0.0) {
+    // Inside the prism over the triangle: the distance to its plane.
+    const Vec3 q = p - normal * (p - a).dot(normal) / area2;
+    const double u = (c - b).cross(q - b).dot(normal), v = (a - c).cross(q - c).dot(normal),
+                 w = (b - a).cross(q - a).dot(normal);
+    if (u >= 0.0 && v >= 0.0 && w >= 0.0) return (p - q).norm();
+  }
+  const auto segment = [&](const Vec3& s, const Vec3& e) {
+    const Vec3 d = e - s;
+    const double t = d.squaredNorm() > 0.0 ? std::clamp((p - s).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+    return (p - (s + t * d)).norm();
+  };
+  return std::min({segment(a, b), segment(b, c), segment(c, a)});
+}
+
+Embedding embed_points(const Vertices& points, const VolumeMesh& mesh) {
+  if (mesh.T.rows() == 0) throw std::invalid_argument("embedding: the simulation mesh has no tets");
+  const std::vector<BoundaryFace> boundary = boundary_faces(mesh.T);
+  const auto corner = [&](int t, int k) -> Vec3 { return mesh.V.row(mesh.T(t, k)); };
+  Embedding embedding;
+  embedding.tet.resize(points.rows());
+  embedding.weights.resize(points.rows(), 4);
+  tbb::parallel_for(Eigen::Index(0), points.rows(), [&](Eigen::Index i) {
+    const Vec3 p = points.row(i);
+    int best = -1;
+    double best_min_weight = -std::numeric_limits<double>::infinity();
+    Eigen::Vector4d best_weights = Eigen::Vector4d::Zero();
+    for (int t = 0; t < static_cast<int>(mesh.T.rows()); ++t) {
+      const Eigen::Vector4d w = barycentric_coordinates(p, corner(t, 0), corner(t, 1), corner(t, 2), corner(t, 3));
+      if (w.minCoeff() > best_min_weight) {
+        best_min_weight = w.minCoeff();
+        best = t;
+        best_weights = w;
+      }
+    }
+    constexpr double kInsideTolerance = -1e-12;
+    if (best_min_weight < kInsideTolerance) {  // outside: the tet of the nearest boundary face
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const BoundaryFace& face : boundary) {
+        const double distance = point_triangle_distance(p, mesh.V.row(face.corners[0]), mesh.V.row(face.corners[1]),
+                                                        mesh.V.row(face.corners[2]));
+        if (distance < nearest) {
+          nearest = distance;
+          best = face.tet;
+        }
+      }
+      best_weights = barycentric_coordinates(p, corner(best, 0), corner(best, 1), corner(best, 2), corner(best, 3));
+    }
+    embedding.tet[i] = best;
+    embedding.weights.row(i) = best_weights.transpose();
+  });
+  return embedding;
+}
+
+Vertices apply_embedding(const Embedding& embedding, const Vertices& x, const Tets& T) {
+  Vertices result(embedding.tet.size(), 3);
+  for (Eigen::Index i = 0; i < embedding.tet.size(); ++i) {
+    const int t = embedding.tet[i];
+    result.row(i) = embedding.weights(i, 0) * x.row(T(t, 0)) + embedding.weights(i, 1) * x.row(T(t, 1)) +
+                    embedding.weights(i, 2) * x.row(T(t, 2)) + embedding.weights(i, 3) * x.row(T(t, 3));
+  }
+  return result;
+}
+
+}  // namespace rice::grains

@@ -1,0 +1,126 @@
+// CGAL Mesh_3 on a polyhedral domain (see simulation_mesh.hpp). Kept in its own translation
+// unit: it is the slowest file of the project to compile.
+#include "grains/simulation_mesh.hpp"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Mesh_criteria_3.h>
+#include <CGAL/Mesh_triangulation_3.h>
+#include <CGAL/Polyhedral_mesh_domain_3.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/make_mesh_3.h>
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "grains/surface_measures.hpp"
+#include "grains/tet_quality.hpp"
+
+namespace rice::grains {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Polyhedron = CGAL::Surface_mesh<Point>;
+using Domain = CGAL::Polyhedral_mesh_domain_3<Polyhedron, Kernel>;
+using Triangulation = CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>::type;
+using Complex = CGAL::Mesh_complex_3_in_triangulation_3<Triangulation>;
+using Criteria = CGAL::Mesh_criteria_3<Triangulation>;
+
+void require(bool ok, const std::string& parameter, const std::string& expected) {
+  if (!ok) throw std::invalid_argument("simulation mesh parameter " + parameter + " must be " + expected);
+}
+
+Polyhedron to_cgal(const SurfaceMesh& surface) {
+  Polyhedron polyhedron;
+  std::vector<Polyhedron::Vertex_index> vertices;
+  for (Eigen::Index v = 0; v < surface.V.rows(); ++v)
+    vertices.push_back(polyhedron.add_vertex(Point(surface.V(v, 0), surface.V(v, 1), surface.V(v, 2))));
+  for (Eigen::Index f = 0; f < surface.F.rows(); ++f)
+    if (polyhedron.add_face(vertices[surface.F(f, 0)], vertices[surface.F(f, 1)], vertices[surface.F(f, 2)]) ==
+        Polyhedron::null_face())
+      throw std::invalid_argument("simulation mesh: face " + std::to_string(f) + " breaks the surface's manifoldness");
+  return polyhedron;
+}
+
+// Tets of the complex as plain matrices, only the vertices they use, positively oriented.
+VolumeMesh from_complex(const Complex& complex) {
+  std::map<Triangulation::Vertex_handle, int> index;
+  VolumeMesh mesh;
+  std::vector<Vec3> vertices;
+  std::vector<Eigen::Vector4i> tets;
+  for (auto cell = complex.cells_in_complex_begin(); cell != complex.cells_in_complex_end(); ++cell) {
+    Eigen::Vector4i tet;
+    for (int k = 0; k < 4; ++k) {
+      const auto vertex = cell->vertex(k);
+      const auto [it, inserted] = index.emplace(vertex, static_cast<int>(vertices.size()));
+      if (inserted) {
+        const auto& p = complex.triangulation().point(vertex);
+        vertices.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+      }
+      tet[k] = it->second;
+    }
+    if (tet_signed_volume(vertices[tet[0]], vertices[tet[1]], vertices[tet[2]], vertices[tet[3]]) < 0.0)
+      std::swap(tet[2], tet[3]);
+    tets.push_back(tet);
+  }
+  mesh.V.resize(static_cast<Eigen::Index>(vertices.size()), 3);
+  for (size_t v = 0; v < vertices.size(); ++v) mesh.V.row(static_cast<Eigen::Index>(v)) = vertices[v];
+  mesh.T.resize(static_cast<Eigen::Index>(tets.size()), 4);
+  for (size_t t = 0; t < tets.size(); ++t) mesh.T.row(static_cast<Eigen::Index>(t)) = tets[t];
+  return mesh;
+}
+
+}  // namespace
+
+void validate(const SimulationMeshParameters& p) {
+  require(p.min_vertices >= 4 && p.min_vertices <= p.max_vertices, "vertex range",
+          "4 <= min_vertices <= max_vertices");
+  require(p.edge_size > 0.0, "edge_size", "positive");
+  require(p.facet_distance > 0.0, "facet_distance", "positive");
+  require(p.facet_angle_degrees > 0.0 && p.facet_angle_degrees <= 30.0, "facet_angle_degrees",
+          "in (0, 30] (Mesh_3 terminates for angles up to 30)");
+  require(p.radius_edge_ratio >= 2.0, "radius_edge_ratio", ">= 2 (Mesh_3 terminates for ratios >= 2)");
+  require(p.exude_sliver_degrees >= 0.0 && p.exude_sliver_degrees < 60.0, "exude_sliver_degrees", "in [0, 60)");
+}
+
+VolumeMesh make_simulation_mesh(const SurfaceMesh& surface, const SimulationMeshParameters& p, std::uint64_t seed) {
+  validate(p);
+  const Vec3 extent = bounding_box_extent(surface.V);
+  const double size_scale = std::cbrt(extent.prod()), distance_scale = extent.minCoeff();
+  const Polyhedron polyhedron = to_cgal(surface);
+  namespace params = CGAL::parameters;
+  VolumeMesh mesh;
+  double scale = 1.0;
+  for (int attempt = 0; attempt < 8; ++attempt) {
+    CGAL::Random random(static_cast<unsigned int>(seed));
+    const Domain domain(polyhedron, &random);
+    const Criteria criteria(params::facet_angle = p.facet_angle_degrees,
+                            params::facet_size = scale * p.edge_size * size_scale,
+                            params::facet_distance = scale * p.facet_distance * distance_scale,
+                            params::cell_radius_edge_ratio = p.radius_edge_ratio,
+                            params::cell_size = scale * p.edge_size * size_scale);
+    const Complex complex =
+        p.exude_sliver_degrees > 0.0
+            ? CGAL::make_mesh_3<Complex>(domain, criteria, params::no_perturb(),
+                                         params::exude(params::sliver_bound = p.exude_sliver_degrees))
+            : CGAL::make_mesh_3<Complex>(domain, criteria, params::no_perturb(), params::no_exude());
+    mesh = from_complex(complex);
+    if (mesh.V.rows() > p.max_vertices)
+      scale *= 1.2;
+    else if (mesh.V.rows() < p.min_vertices)
+      scale /= 1.2;
+    else
+      break;
+  }
+  if (mesh.T.rows() == 0) throw std::runtime_error("simulation mesh: Mesh_3 produced no tetrahedra");
+  const TetQuality quality = measure_tet_quality(mesh);
+  if (!(quality.min_volume > 0.0))
+    throw std::runtime_error("simulation mesh: a tetrahedron has volume " + std::to_string(quality.min_volume));
+  return mesh;
+}
+
+}  // namespace rice::grains

@@ -1,0 +1,36 @@
+// Low-resolution tetrahedral simulation mesh of a grain (paper §4.3: the dynamics run on a
+// coarse mesh, the render mesh rides on it), made by CGAL's Mesh_3 from the closed base
+// surface: Delaunay refinement to the size criteria below, then sliver exudation. Tets come
+// out positively oriented; none is inverted or flat (checked, and an error if violated).
+#pragma once
+
+#include <cstdint>
+
+#include "grains/mesh_types.hpp"
+
+namespace rice::grains {
+
+/// Mesh_3 criteria relative to the grain's bounding box, so one setting fits every cultivar
+/// (from bold japonica to basmati, seven times longer than thick). Mesh_3's vertex count for
+/// fixed criteria varies about fourfold with its random initial points, so the size and
+/// distance bounds are scaled together (by 1.2 per try, up to 8 tries) until the count lies in
+/// [min_vertices, max_vertices].
+struct SimulationMeshParameters {
+  int min_vertices = 20;
+  int max_vertices = 60;
+  double edge_size = 0.6;         ///< facet and cell size bound, fraction of (L W T)^(1/3)
+  double facet_distance = 0.2;    ///< surface approximation error bound, fraction of T
+  double facet_angle_degrees = 25.0;
+  double radius_edge_ratio = 3.0;
+  double exude_sliver_degrees = 10.0;  ///< exudation target for the smallest dihedral angle
+};
+
+/// Throws std::invalid_argument naming the parameter and its accepted range.
+void validate(const SimulationMeshParameters& parameters);
+
+/// Tetrahedralises the inside of the closed surface `surface`; deterministic given `seed`.
+/// When no try lands in the vertex range, the last try is returned.
+VolumeMesh make_simulation_mesh(const SurfaceMesh& surface, const SimulationMeshParameters& parameters,
+                                std::uint64_t seed);
+
+}  // namespace rice::grains

@@ -1,0 +1,148 @@
+// Simulation tet meshes (quality, size), the embedding (exact at rest, rigid under rigid
+// motion) and whole grains (deterministic, bad input refused).
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+
+#include "grains/grain_generator.hpp"
+#include "grains/mesh_topology.hpp"
+#include "grains/surface_measures.hpp"
+#include "grains/tet_quality.hpp"
+
+namespace rice::grains {
+namespace {
+
+TEST(TetQuality, RegularTetrahedronHasTheKnownFigures) {
+  VolumeMesh mesh{Vertices(4, 3), Tets(1, 4)};
+  mesh.V << 1, 1, 1, 1, -1, -1, -1, 1, -1, -1, -1, 1;
+  mesh.T << 0, 1, 2, 3;
+  if (tet_signed_volume(mesh.V.row(0), mesh.V.row(1), mesh.V.row(2), mesh.V.row(3)) < 0) std::swap(mesh.T(0, 2), mesh.T(0, 3));
+  const TetQuality q = measure_tet_quality(mesh);
+  EXPECT_NEAR(q.min_volume, 8.0 / 3.0, 1e-12);
+  EXPECT_NEAR(q.min_dihedral_degrees, std::acos(1.0 / 3.0) * 180.0 / M_PI, 1e-9);
+  EXPECT_NEAR(q.max_dihedral_degrees, q.min_dihedral_degrees, 1e-9);
+  EXPECT_NEAR(q.max_radius_edge_ratio, std::sqrt(6.0) / 4.0, 1e-12);
+}
+
+TEST(SimulationMesh, DefaultsGiveTenToSixtyVerticesOfBoundedQuality) {
+  for (const std::string& name : cultivar_names())
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+      RandomStream random(seed);
+      const SurfaceMesh base = make_base_shape(sample_grain_shape(cultivar_by_name(name), random));
+      const VolumeMesh mesh = make_simulation_mesh(base, {}, seed);
+      EXPECT_GE(mesh.V.rows(), 10) << name << " seed " << seed;
+      EXPECT_LE(mesh.V.rows(), 60) << name << " seed " << seed;
+      const TetQuality q = measure_tet_quality(mesh);
+      EXPECT_GT(q.min_volume, 0.0) << name;
+      EXPECT_GT(q.min_dihedral_degrees, 3.0) << name;
+      EXPECT_LT(q.max_radius_edge_ratio, 4.0) << name;
+      // The coarse mesh is inscribed in the smooth base surface; slender basmati grains lose
+      // their tips (seen: 45–95% of the volume); the lumped masses are rescaled to match.
+      double volume = 0.0;
+      for (Eigen::Index t = 0; t < mesh.T.rows(); ++t)
+        volume += tet_signed_volume(mesh.V.row(mesh.T(t, 0)), mesh.V.row(mesh.T(t, 1)), mesh.V.row(mesh.T(t, 2)),
+                                    mesh.V.row(mesh.T(t, 3)));
+      EXPECT_GT(volume, 0.4 * enclosed_volume(base)) << name;
+      EXPECT_LT(volume, 1.01 * enclosed_volume(base)) << name;
+    }
+}
+
+TEST(Embedding, PointsOutsideASingleTetAreExtrapolatedExactly) {
+  VolumeMesh mesh{Vertices(4, 3), Tets(1, 4)};
+  mesh.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
+  mesh.T << 0, 1, 2, 3;
+  Vertices points(3, 3);
+  points << 0.1, 0.2, 0.3, 2.0, -1.0, 0.5, -0.5, -0.5, -0.5;
+  const Embedding embedding = embed_points(points, mesh);
+  EXPECT_GE(embedding.weights.row(0).minCoeff(), 0.0);
+  EXPECT_LT(embedding.weights.row(1).minCoeff(), 0.0);
+  EXPECT_NEAR((apply_embedding(embedding, mesh.V, mesh.T) - points).cwiseAbs().maxCoeff(), 0.0, 1e-15);
+  EXPECT_NEAR(point_triangle_distance(Vec3(2, 2, 1), Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)),
+              std::sqrt(2 * 1.5 * 1.5 + 1.0), 1e-15);  // nearest point (0.5, 0.5, 0), on the long edge
+}
+
+class GrainTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    GrainRecipe recipe;
+    recipe.cultivar = cultivar_by_name("japonica");
+    grain_ = new Grain(make_grain(recipe, 42));
+  }
+  static void TearDownTestSuite() { delete grain_; }
+  static Grain* grain_;
+};
+Grain* GrainTest::grain_ = nullptr;
+
+TEST_F(GrainTest, EmbeddingReproducesTheRenderMeshAtRest) {
+  const Vertices rest = apply_embedding(grain_->embedding, grain_->simulation.V, grain_->simulation.T);
+  const double size = bounding_box_extent(grain_->render.V).maxCoeff();
+  EXPECT_LT((rest - grain_->render.V).cwiseAbs().maxCoeff(), 1e-12 * size);
+}
+
+TEST_F(GrainTest, EmbeddingMovesRigidlyUnderRigidMotion) {
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(1.1, Vec3(1, 2, -0.5).normalized()).toRotationMatrix();
+  const Vec3 shift(0.03, -0.01, 0.2);
+  const Vertices moved = (grain_->simulation.V * R.transpose()).rowwise() + shift.transpose();
+  const Vertices render = apply_embedding(grain_->embedding, moved, grain_->simulation.T);
+  const Vertices expected = (grain_->render.V * R.transpose()).rowwise() + shift.transpose();
+  EXPECT_LT((render - expected).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+TEST_F(GrainTest, SwellFactorScalesBothMeshesAndTheMassIsKept) {
+  EXPECT_GE(grain_->shape.swell, 1.3);
+  EXPECT_LE(grain_->shape.swell, 1.5);
+  EXPECT_NEAR(enclosed_volume(grain_->render) / grain_->level_set.porous_volume, std::pow(grain_->shape.swell, 3),
+              0.02 * std::pow(grain_->shape.swell, 3));
+  EXPECT_FALSE(closed_manifold_defect(grain_->render).has_value());
+  EXPECT_GT(grain_->simulation_density, 1.1e3);  // the coarse mesh is smaller than the render volume
+}
+
+TEST_F(GrainTest, SameSeedGivesIdenticalGrainsAndAnotherSeedDoesNot) {
+  GrainRecipe recipe;
+  recipe.cultivar = cultivar_by_name("japonica");
+  const Grain again = make_grain(recipe, 42);
+  EXPECT_EQ(again.render.V, grain_->render.V);
+  EXPECT_EQ(again.render.F, grain_->render.F);
+  EXPECT_EQ(again.simulation.V, grain_->simulation.V);
+  EXPECT_EQ(again.simulation.T, grain_->simulation.T);
+  EXPECT_EQ(again.embedding.weights, grain_->embedding.weights);
+  const Grain other = make_grain(recipe, 43);
+  EXPECT_NE(other.render.V.rows(), grain_->render.V.rows());
+}
+
+TEST(GrainRecipe, OpenBaseMeshIsRefusedNamingTheEdge) {
+  GrainRecipe recipe;
+  recipe.cultivar = cultivar_by_name("indica");
+  RandomStream random(1);
+  SurfaceMesh base = make_base_shape(sample_grain_shape(recipe.cultivar, random), {8, 8});
+  base.F.conservativeResize(base.F.rows() - 1, 3);
+  recipe.base_mesh = base;
+  try {
+    validate(recipe);
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("base mesh: edge ("), std::string::npos) << e.what();
+  }
+}
+
+TEST(GrainInstances, RotationsAreUnitAndSwellStaysInRange) {
+  const Cultivar c = cultivar_by_name("aromatic");
+  RandomStream random(9);
+  const auto instances = make_instances(2000, 7, c, random);
+  std::vector<int> per_variant(7, 0);
+  Vec3 mean_axis = Vec3::Zero();
+  for (const GrainInstance& instance : instances) {
+    EXPECT_NEAR(instance.rotation.norm(), 1.0, 1e-12);
+    EXPECT_GE(instance.swell, c.swell_min);
+    EXPECT_LE(instance.swell, c.swell_max);
+    ++per_variant.at(instance.variant);
+    mean_axis += instance.rotation * Vec3::UnitX() / 2000.0;
+  }
+  for (int n : per_variant) EXPECT_GT(n, 200);
+  EXPECT_LT(mean_axis.norm(), 0.1);  // uniform orientations average out
+}
+
+}  // namespace
+}  // namespace rice::grains
