@@ -8,12 +8,15 @@
 #include <memory>
 
 #include "experiments/convergence_study.hpp"
+#include "experiments/grain_library.hpp"
+#include "grains/mesh_io.hpp"
 #include "experiments/oscillator_study.hpp"
 #include "experiments/water_absorption_figure.hpp"
 #include "experiments/xpbd_stiffness_study.hpp"
 
 int main(int argc, char** argv) {
   using namespace rice::experiments;
+  namespace grains = rice::grains;
   CLI::App app{"rice: a testbed for simulating and rendering freshly cooked rice"};
   app.require_subcommand(1);
   int threads = 0;
@@ -60,6 +63,43 @@ int main(int argc, char** argv) {
                                                      "tau of the damped runs [s]")
       ->check(CLI::PositiveNumber)->capture_default_str();
 
+  GrainLibrarySettings library;
+  std::string library_out = "out/grains", cultivar_name = "japonica", base_mesh_path;
+  grains::Cultivar& cultivar = library.recipe.cultivar;
+  cultivar = grains::cultivar_by_name(cultivar_name);
+  grains::PorosityParameters& porosity = library.recipe.porosity;
+  bool no_sections = false;
+  CLI::App* grains_cmd = app.add_subcommand("grains", "procedural grains: render and simulation meshes, embedding");
+  grains_cmd->add_option("--out", library_out, "output folder")->capture_default_str();
+  grains_cmd->add_option("--cultivar", cultivar_name, "japonica, indica, aromatic or glutinous")->capture_default_str();
+  grains_cmd->add_option("--count", library.count, "number of grains")->capture_default_str();
+  grains_cmd->add_option("--variants", library.variants, "0: generate every grain; K: K variants, instanced")
+      ->capture_default_str();
+  grains_cmd->add_option("--seed", library.seed, "random seed")->capture_default_str();
+  grains_cmd->add_option("--base-mesh", base_mesh_path, "closed manifold OBJ/OFF/PLY [m] replacing the base shape")
+      ->check(CLI::ExistingFile);
+  CLI::Option* length_opt = grains_cmd->add_option("--length", "mean raw length [m] (cultivar default)");
+  CLI::Option* width_opt = grains_cmd->add_option("--width", "mean raw width [m] (cultivar default)");
+  CLI::Option* thickness_opt = grains_cmd->add_option("--thickness", "mean raw thickness [m] (cultivar default)");
+  CLI::Option* swell_min_opt = grains_cmd->add_option("--swell-min", "smallest P of eq. 2 (cultivar default)");
+  CLI::Option* swell_max_opt = grains_cmd->add_option("--swell-max", "largest P of eq. 2 (cultivar default)");
+  grains_cmd->add_option("--porosity", porosity.core_porosity, "void fraction of the core")->capture_default_str();
+  grains_cmd->add_option("--pores", porosity.pore_count, "pore count (-1: from --porosity)")->capture_default_str();
+  grains_cmd->add_option("--pore-radius-min", porosity.pore_radius_min, "[m]")->capture_default_str();
+  grains_cmd->add_option("--pore-radius-max", porosity.pore_radius_max, "[m]")->capture_default_str();
+  grains_cmd->add_option("--bumps", porosity.bump_count, "spheres on the surface")->capture_default_str();
+  grains_cmd->add_option("--bump-radius-min", porosity.bump_radius_min, "[m]")->capture_default_str();
+  grains_cmd->add_option("--bump-radius-max", porosity.bump_radius_max, "[m]")->capture_default_str();
+  grains_cmd->add_option("--skin", porosity.skin_thickness, "pore-free skin [m]")->capture_default_str();
+  grains_cmd->add_option("--voxel-size", porosity.voxel_size, "[m] (0: smallest radius / 1.5)")->capture_default_str();
+  grains_cmd->add_option("--adaptivity", library.recipe.mesh_adaptivity, "render mesh adaptivity in [0, 1]")
+      ->capture_default_str();
+  grains_cmd->add_option("--min-vertices", library.recipe.simulation.min_vertices, "simulation mesh size range")
+      ->capture_default_str();
+  grains_cmd->add_option("--max-vertices", library.recipe.simulation.max_vertices, "simulation mesh size range")
+      ->capture_default_str();
+  grains_cmd->add_flag("--no-sections", no_sections, "skip the cross-section PNGs");
+
   CLI::App* figure = app.add_subcommand("figure", "regenerate a figure of the paper");
   figure->require_subcommand(1);
 
@@ -94,6 +134,18 @@ int main(int argc, char** argv) {
       if (young_opt->count()) settings.bar.young = convergence.bar.young;
       if (tau_opt->count()) settings.rayleigh_time = convergence.rayleigh_time;
       convergence_study_command(settings, convergence_out);
+    }
+    if (*grains_cmd) {
+      // Cultivar first, then the user's edits of it.
+      cultivar = grains::cultivar_by_name(cultivar_name);
+      if (length_opt->count()) cultivar.length.mean = length_opt->as<double>();
+      if (width_opt->count()) cultivar.width.mean = width_opt->as<double>();
+      if (thickness_opt->count()) cultivar.thickness.mean = thickness_opt->as<double>();
+      if (swell_min_opt->count()) cultivar.swell_min = swell_min_opt->as<double>();
+      if (swell_max_opt->count()) cultivar.swell_max = swell_max_opt->as<double>();
+      if (!base_mesh_path.empty()) library.recipe.base_mesh = grains::read_surface_mesh(base_mesh_path);
+      library.sections = !no_sections;
+      grain_library_command(library, library_out);
     }
     if (*figure11_cmd) water_absorption_figure_command(absorption, absorption_out);
   } catch (const CLI::Error& e) {

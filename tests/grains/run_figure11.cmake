@@ -1,0 +1,17 @@
+# `rice figure 11` end to end: its CSVs are written and the damping fit has one row per
+# temperature of the shipped table. Called by CTest with -DRICE=<rice binary> -DOUT=<folder>.
+file(REMOVE_RECURSE "${OUT}")
+execute_process(COMMAND "${RICE}" figure 11 --out "${OUT}" RESULT_VARIABLE result OUTPUT_QUIET)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "rice figure 11 exited with ${result}")
+endif()
+foreach(name absorption_data.csv absorption_curves.csv peleg_fits.csv damping_fits.csv run_info.txt)
+  if(NOT EXISTS "${OUT}/${name}")
+    message(FATAL_ERROR "missing ${OUT}/${name}")
+  endif()
+endforeach()
+file(STRINGS "${OUT}/damping_fits.csv" rows)
+list(LENGTH rows count)
+if(NOT count EQUAL 5)
+  message(FATAL_ERROR "damping_fits.csv has ${count} lines, expected a header and 4 temperatures")
+endif()
