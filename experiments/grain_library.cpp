@@ -33,23 +33,18 @@ void write_embedding_csv(const grains::Embedding& embedding, const std::filesyst
   write_text_atomically(path, table.text());
 }
 
-// One generated grain's files.
-void write_grain_files(const grains::Grain& grain, const std::filesystem::path& folder, const std::string& stem,
-                       bool section) {
-  grains::write_ply(folder / (stem + ".ply"), grain.render);
-  grains::write_medit(folder / (stem + ".mesh"), grain.simulation);
-  write_embedding_csv(grain.embedding, folder / (stem + "_embedding.csv"));
-  if (section) write_cross_section_png(grain, folder / (stem + "_section.png"));
-}
+}  // namespace
 
-const std::vector<std::string> kColumns = {
+const std::vector<std::string>& grain_table_columns() {
+  static const std::vector<std::string> columns = {
     "grain", "variant", "cultivar", "swell", "length_m", "width_m", "thickness_m", "render_volume_m3",
     "level_set_volume_m3", "porosity", "core_porosity", "pores", "bumps", "spheres_skipped", "render_vertices",
     "render_faces", "simulation_vertices", "simulation_tets", "min_dihedral_deg", "max_radius_edge_ratio",
     "simulation_density", "qw", "qx", "qy", "qz"};
+  return columns;
+}
 
-// One grains.csv row: `grain` generated at P = grain.shape.swell, shown at P = swell.
-std::vector<std::string> grain_row(int index, int variant, const std::string& cultivar, const grains::Grain& grain,
+std::vector<std::string> grain_table_row(int index, int variant, const std::string& cultivar, const grains::Grain& grain,
                                    double swell, const Eigen::Quaterniond& rotation) {
   const double scale = swell / grain.shape.swell;  // 1 for generated grains
   const grains::Vec3 extent = grains::bounding_box_extent(grain.render.V) * scale;
@@ -66,25 +61,34 @@ std::vector<std::string> grain_row(int index, int variant, const std::string& cu
           cell(rotation.w()), cell(rotation.x()), cell(rotation.y()), cell(rotation.z())};
 }
 
-}  // namespace
-
-void write_cross_section_png(const grains::Grain& grain, const std::filesystem::path& path) {
-  const double pixel = 0.25 * grain.level_set.voxel_size;
-  const grains::Vec3 low = grain.render.V.colwise().minCoeff().transpose() / grain.shape.swell;
-  const grains::Vec3 high = grain.render.V.colwise().maxCoeff().transpose() / grain.shape.swell;
-  const grains::Vec3 margin = grains::Vec3::Constant(4.0 * pixel);
+RgbImage cross_section_image(const grains::Grain& grain, double pixel) {
+  // The level set is in the unswollen frame: sample it at pixel / P.
+  const double swell = grain.shape.swell, frame_pixel = pixel / swell;
+  const grains::Vec3 low = grain.render.V.colwise().minCoeff().transpose() / swell;
+  const grains::Vec3 high = grain.render.V.colwise().maxCoeff().transpose() / swell;
+  const grains::Vec3 margin = grains::Vec3::Constant(4.0 * frame_pixel);
   const Eigen::MatrixXf distance =
-      grains::cross_section_z(*grain.level_set.grid, low - margin, high + margin, 0.0, pixel);
+      grains::cross_section_z(*grain.level_set.grid, low - margin, high + margin, 0.0, frame_pixel);
   RgbImage image(static_cast<int>(distance.cols()), static_cast<int>(distance.rows()));
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
-      const double material = std::clamp(0.5 - distance(y, x) / pixel, 0.0, 1.0);  // 1 inside
+      const double material = std::clamp(0.5 - distance(y, x) / frame_pixel, 0.0, 1.0);  // 1 inside
       const auto mix = [&](double dark, double light) {
         return static_cast<std::uint8_t>(dark + material * (light - dark));
       };
       image.set(x, y, mix(25, 245), mix(30, 238), mix(45, 220));
     }
-  write_png(path, image);
+  return image;
+}
+
+void write_grain_files(const grains::Grain& grain, const std::filesystem::path& folder, const std::string& stem,
+                       bool section) {
+  grains::write_ply(folder / (stem + ".ply"), grain.render);
+  grains::write_medit(folder / (stem + ".mesh"), grain.simulation);
+  write_embedding_csv(grain.embedding, folder / (stem + "_embedding.csv"));
+  if (section)
+    write_png(folder / (stem + "_section.png"),
+              cross_section_image(grain, 0.25 * grain.level_set.voxel_size * grain.shape.swell));
 }
 
 void grain_library_command(const GrainLibrarySettings& settings, const std::filesystem::path& folder) {
@@ -116,18 +120,18 @@ void grain_library_command(const GrainLibrarySettings& settings, const std::file
     if (instanced)
       variants[i] = std::move(grain);
     else
-      rows[i] = grain_row(i, i, cultivar, grain, grain.shape.swell, Eigen::Quaterniond::Identity());
+      rows[i] = grain_table_row(i, i, cultivar, grain, grain.shape.swell, Eigen::Quaterniond::Identity());
     progress.update(++done);
   });
   progress.finish();
   const double generation_seconds = seconds_since(start);
 
   const auto instancing_start = std::chrono::steady_clock::now();
-  CsvTable table(kColumns);
+  CsvTable table(grain_table_columns());
   if (instanced) {
     const auto instances = grains::make_instances(settings.count, settings.variants, settings.recipe.cultivar, random);
     for (int i = 0; i < settings.count; ++i)
-      table.add_row(grain_row(i, instances[i].variant, cultivar, variants[instances[i].variant], instances[i].swell,
+      table.add_row(grain_table_row(i, instances[i].variant, cultivar, variants[instances[i].variant], instances[i].swell,
                               instances[i].rotation));
   } else {
     for (const auto& row : rows) table.add_row(row);

@@ -9,7 +9,9 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
+#include "experiments/png_image.hpp"
 #include "grains/grain_generator.hpp"
 
 namespace rice::experiments {
@@ -26,8 +28,20 @@ struct GrainLibrarySettings {
 /// settings are bad.
 void grain_library_command(const GrainLibrarySettings& settings, const std::filesystem::path& folder);
 
-/// Writes a cross-section of `grain`'s level set at mid-thickness (z = 0) as PNG: grain
-/// material light, pores and outside dark, edges anti-aliased over one pixel.
-void write_cross_section_png(const grains::Grain& grain, const std::filesystem::path& path);
+/// Cross-section of `grain`'s level set at mid-thickness (z = 0) in its swollen size, `pixel`
+/// metres a pixel: grain material light, pores and outside dark, edges anti-aliased.
+RgbImage cross_section_image(const grains::Grain& grain, double pixel);
+
+/// Columns of grains.csv, and one row for `grain` shown at swell factor `swell` (its own
+/// when generated, an instance's otherwise) with orientation `rotation`.
+const std::vector<std::string>& grain_table_columns();
+std::vector<std::string> grain_table_row(int index, int variant, const std::string& cultivar,
+                                         const grains::Grain& grain, double swell,
+                                         const Eigen::Quaterniond& rotation);
+
+/// Writes <stem>.ply (render mesh), <stem>.mesh (simulation mesh), <stem>_embedding.csv and,
+/// when `section`, <stem>_section.png (at a quarter voxel a pixel) into `folder`.
+void write_grain_files(const grains::Grain& grain, const std::filesystem::path& folder, const std::string& stem,
+                       bool section);
 
 }  // namespace rice::experiments

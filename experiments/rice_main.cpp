@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "experiments/convergence_study.hpp"
+#include "experiments/grain_figures.hpp"
 #include "experiments/grain_library.hpp"
 #include "grains/mesh_io.hpp"
 #include "experiments/oscillator_study.hpp"
@@ -112,6 +113,19 @@ int main(int argc, char** argv) {
                            "absorption CSV (temperature_c,soak_minutes,absorption_percent); default: shipped table")
       ->check(CLI::ExistingFile);
 
+  std::string figure8_out = "out/figure8", figure9_out = "out/figure9";
+  std::uint64_t figure_seed = 1;
+  int figure9_count = 20;
+  CLI::App* figure8_cmd = figure->add_subcommand("8", "japonica grains of different sizes (P from 1 to 1.5)");
+  figure8_cmd->add_option("--out", figure8_out, "output folder")->capture_default_str();
+  figure8_cmd->add_option("--seed", figure_seed, "random seed")->capture_default_str();
+  CLI::App* figure9_cmd =
+      figure->add_subcommand("9", "indica, japonica, aromatic side by side; dimensions against the literature");
+  figure9_cmd->add_option("--out", figure9_out, "output folder")->capture_default_str();
+  figure9_cmd->add_option("--seed", figure_seed, "random seed")->capture_default_str();
+  figure9_cmd->add_option("--count", figure9_count, "grains per cultivar for the dimension statistics")
+      ->check(CLI::Range(2, 100000))->capture_default_str();
+
   CLI11_PARSE(app, argc, argv);
   std::unique_ptr<tbb::global_control> limit;
   if (threads > 0)
@@ -147,6 +161,8 @@ int main(int argc, char** argv) {
       library.sections = !no_sections;
       grain_library_command(library, library_out);
     }
+    if (*figure8_cmd) grain_sizes_figure_command(figure_seed, figure8_out);
+    if (*figure9_cmd) cultivars_figure_command(figure_seed, figure9_count, figure9_out);
     if (*figure11_cmd) water_absorption_figure_command(absorption, absorption_out);
   } catch (const CLI::Error& e) {
     return app.exit(e);

@@ -15,10 +15,15 @@
 // width and thickness ratios (1.1–1.25) are ESTIMATES chosen to give cooked japonica grains
 // of about 7 × 3.6 × 2.8 mm, as cooked short-grain rice measures.
 //
-// Swell factor P: the volume expansion ratio of cooked rice is about 2.5–3.5 (Juliano 1993
-// reports volume expansion of milled rice on cooking in this range), so P = (volume ratio)^(1/3)
-// lies in 1.35–1.5 for japonica; the paper observes that indica "does not expand easily", so
-// its range is lower. These ranges are ESTIMATES within the paper's [1, 1.5].
+// Swell factor P: the base shape has the cooked proportions at the raw volume, so P alone
+// carries the volume change, P³ = volume ratio. Its range is centred on the cube root of the
+// product of the three cooked/raw ratios, so that the mean cooked grain has the published
+// cooked dimensions (raw × ratio, per axis): japonica (1.30·1.15·1.25)^(1/3) = 1.23, indica
+// 1.26, basmati 1.38, glutinous 1.15; the ± 0.08 spread around it is an ESTIMATE of the
+// grain-to-grain variation. The paper observes that indica "does not expand easily"; by the
+// measured ratios it expands about as much as japonica. Bulk measurements of cooked rice
+// report larger volume expansion (2.5–4, Juliano 1993) because they include the water held
+// between grains; per-grain dimensions are what a grain model needs.
 #include "grains/cultivar.hpp"
 
 #include <algorithm>
@@ -41,8 +46,8 @@ Cultivar japonica() {
   c.asymmetry = 0.10;
   c.notch_depth = 0.15;
   c.notch_size = 0.10;
-  c.swell_min = 1.30;
-  c.swell_max = 1.50;
+  c.swell_min = 1.15;
+  c.swell_max = 1.31;
   return c;
 }
 
@@ -59,8 +64,8 @@ Cultivar indica() {
   c.asymmetry = 0.08;
   c.notch_depth = 0.12;
   c.notch_size = 0.08;
-  c.swell_min = 1.15;
-  c.swell_max = 1.35;
+  c.swell_min = 1.18;
+  c.swell_max = 1.34;
   return c;
 }
 
@@ -78,7 +83,7 @@ Cultivar aromatic() {
   c.notch_depth = 0.12;
   c.notch_size = 0.06;
   c.swell_min = 1.30;
-  c.swell_max = 1.45;
+  c.swell_max = 1.46;
   return c;
 }
 
@@ -92,8 +97,8 @@ Cultivar glutinous() {
   c.cooked_width_ratio = 1.10;
   c.cooked_thickness_ratio = 1.15;
   c.tip_exponent = 2.6;
-  c.swell_min = 1.20;
-  c.swell_max = 1.40;
+  c.swell_min = 1.07;
+  c.swell_max = 1.23;
   return c;
 }
 

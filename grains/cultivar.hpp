@@ -4,8 +4,9 @@
 //   cooked = P · (r / (r_L r_W r_T)^(1/3)) ∘ raw,
 // where r is the cultivar's per-axis cooked/raw ratio: r changes proportions at constant
 // volume (basmati's elongation), and P — a linear factor, as eq. 2 scales voxel coordinates
-// [x, y, z] = P [r, s, t] — multiplies the volume by P³. The defaults pick the P range so
-// that P³ spans the measured volume expansion of cooked rice; see cultivar.cpp for sources.
+// [x, y, z] = P [r, s, t] — multiplies the volume by P³. The default P ranges are centred
+// on (r_L r_W r_T)^(1/3), so the mean grain has the published cooked dimensions raw ∘ r;
+// see cultivar.cpp for sources.
 #pragma once
 
 #include <string>

@@ -96,6 +96,9 @@ VolumeMesh make_simulation_mesh(const SurfaceMesh& surface, const SimulationMesh
   VolumeMesh mesh;
   double scale = 1.0;
   for (int attempt = 0; attempt < 8; ++attempt) {
+    // Mesh_3 draws from the domain's generator and, in places, from CGAL's thread-local
+    // default generator, whose state would carry over from earlier calls: seed both.
+    CGAL::get_default_random() = CGAL::Random(static_cast<unsigned int>(seed));
     CGAL::Random random(static_cast<unsigned int>(seed));
     const Domain domain(polyhedron, &random);
     const Criteria criteria(params::facet_angle = p.facet_angle_degrees,
