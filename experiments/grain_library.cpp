@@ -148,7 +148,7 @@ void grain_library_command(const GrainLibrarySettings& settings, const std::file
   }
   const double mean_grain_seconds = mean.total();
   std::cout << "rice grains: " << generated << (instanced ? " variants" : " grains") << " in " << generation_seconds
-            << " s (" << mean_grain_seconds << " s per grain on one thread, files included in the total)";
+            << " s (" << mean_grain_seconds << " s per grain: sum of its stage times, files excluded)";
   if (instanced) std::cout << "; " << settings.count << " instances in " << instancing_seconds << " s";
   std::cout << '\n';
   write_text_atomically(folder / "run_info.txt",

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The main job: set up, build, and run the studies the testbed currently reproduces,
+# The main job: set up, build, and run the studies and figures the testbed currently reproduces,
 # writing CSV, plots and run statistics under out/.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -7,4 +7,8 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 ./build/experiments/rice study xpbd-stiffness --out out/xpbd-stiffness
 ./build/experiments/rice study oscillator --out out/oscillator
 ./build/experiments/rice study convergence --out out/convergence
+./build/experiments/rice figure 8 --out out/figure8
+./build/experiments/rice figure 9 --out out/figure9
+./build/experiments/rice figure 11 --out out/figure11
+./build/experiments/rice grains --cultivar japonica --count 10 --out out/grains
 echo "main: results are in out/"
