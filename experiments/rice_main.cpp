@@ -5,7 +5,10 @@
 #include <tbb/info.h>
 
 #include <iostream>
+#include <functional>
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "experiments/convergence_study.hpp"
 #include "experiments/grain_figures.hpp"
@@ -79,11 +82,34 @@ int main(int argc, char** argv) {
   grains_cmd->add_option("--seed", library.seed, "random seed")->capture_default_str();
   grains_cmd->add_option("--base-mesh", base_mesh_path, "closed manifold OBJ/OFF/PLY [m] replacing the base shape")
       ->check(CLI::ExistingFile);
-  CLI::Option* length_opt = grains_cmd->add_option("--length", "mean raw length [m] (cultivar default)");
-  CLI::Option* width_opt = grains_cmd->add_option("--width", "mean raw width [m] (cultivar default)");
-  CLI::Option* thickness_opt = grains_cmd->add_option("--thickness", "mean raw thickness [m] (cultivar default)");
-  CLI::Option* swell_min_opt = grains_cmd->add_option("--swell-min", "smallest P of eq. 2 (cultivar default)");
-  CLI::Option* swell_max_opt = grains_cmd->add_option("--swell-max", "largest P of eq. 2 (cultivar default)");
+  // Edits of the chosen cultivar, applied after it is looked up by name.
+  std::vector<std::pair<CLI::Option*, std::function<double&(grains::Cultivar&)>>> cultivar_edits;
+  const auto cultivar_option = [&](const std::string& name, const std::string& help,
+                                   std::function<double&(grains::Cultivar&)> field) {
+    cultivar_edits.emplace_back(grains_cmd->add_option(name)->type_name("FLOAT")->description(help + " (cultivar default)"), field);
+  };
+  cultivar_option("--length", "mean raw length [m]", [](grains::Cultivar& c) -> double& { return c.length.mean; });
+  cultivar_option("--width", "mean raw width [m]", [](grains::Cultivar& c) -> double& { return c.width.mean; });
+  cultivar_option("--thickness", "mean raw thickness [m]",
+                  [](grains::Cultivar& c) -> double& { return c.thickness.mean; });
+  cultivar_option("--cooked-length-ratio", "cooked/raw length",
+                  [](grains::Cultivar& c) -> double& { return c.cooked_length_ratio; });
+  cultivar_option("--cooked-width-ratio", "cooked/raw width",
+                  [](grains::Cultivar& c) -> double& { return c.cooked_width_ratio; });
+  cultivar_option("--cooked-thickness-ratio", "cooked/raw thickness",
+                  [](grains::Cultivar& c) -> double& { return c.cooked_thickness_ratio; });
+  cultivar_option("--tip-exponent", "tip profile exponent p (2 ellipsoidal, larger blunter)",
+                  [](grains::Cultivar& c) -> double& { return c.tip_exponent; });
+  cultivar_option("--asymmetry", "dorsal/ventral width asymmetry",
+                  [](grains::Cultivar& c) -> double& { return c.asymmetry; });
+  cultivar_option("--notch-depth", "embryo notch depth / thickness",
+                  [](grains::Cultivar& c) -> double& { return c.notch_depth; });
+  cultivar_option("--notch-size", "embryo notch radius / length",
+                  [](grains::Cultivar& c) -> double& { return c.notch_size; });
+  cultivar_option("--swell-min", "smallest P of eq. 2", [](grains::Cultivar& c) -> double& { return c.swell_min; });
+  cultivar_option("--swell-max", "largest P of eq. 2", [](grains::Cultivar& c) -> double& { return c.swell_max; });
+  grains_cmd->add_option("--density", library.recipe.density, "grain material density [kg/m^3]")
+      ->capture_default_str();
   grains_cmd->add_option("--porosity", porosity.core_porosity, "void fraction of the core")->capture_default_str();
   grains_cmd->add_option("--pores", porosity.pore_count, "pore count (-1: from --porosity)")->capture_default_str();
   grains_cmd->add_option("--pore-radius-min", porosity.pore_radius_min, "[m]")->capture_default_str();
@@ -152,11 +178,8 @@ int main(int argc, char** argv) {
     if (*grains_cmd) {
       // Cultivar first, then the user's edits of it.
       cultivar = grains::cultivar_by_name(cultivar_name);
-      if (length_opt->count()) cultivar.length.mean = length_opt->as<double>();
-      if (width_opt->count()) cultivar.width.mean = width_opt->as<double>();
-      if (thickness_opt->count()) cultivar.thickness.mean = thickness_opt->as<double>();
-      if (swell_min_opt->count()) cultivar.swell_min = swell_min_opt->as<double>();
-      if (swell_max_opt->count()) cultivar.swell_max = swell_max_opt->as<double>();
+      for (const auto& [option, field] : cultivar_edits)
+        if (option->count()) field(cultivar) = option->as<double>();
       if (!base_mesh_path.empty()) library.recipe.base_mesh = grains::read_surface_mesh(base_mesh_path);
       library.sections = !no_sections;
       grain_library_command(library, library_out);
