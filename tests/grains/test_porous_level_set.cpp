@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "grains/base_shape.hpp"
+#include "grains/grain_generator.hpp"
 #include "grains/level_set_mesh.hpp"
 #include "grains/mesh_topology.hpp"
 #include "grains/porous_level_set.hpp"
@@ -86,16 +87,18 @@ TEST(PorousLevelSet, CorePorosityFollowsItsParameter) {
 }
 
 TEST(PorousLevelSet, RenderMeshIsClosedManifoldAndKeepsTheLevelSetVolume) {
-  RandomStream random(2024);
-  const GrainShape shape = sample_grain_shape(cultivar_by_name("japonica"), random);
-  const PorousLevelSet grain = make_porous_level_set(make_base_shape(shape), PorosityParameters{}, random);
-  EXPECT_GT(grain.pore_count, 0);
-  EXPECT_GT(grain.porosity(), 0.0);
-  for (const double adaptivity : {0.0, 0.2}) {
-    const SurfaceMesh mesh = level_set_to_mesh(*grain.grid, adaptivity);
-    const auto defect = closed_manifold_defect(mesh);
-    EXPECT_FALSE(defect.has_value()) << "adaptivity " << adaptivity << ": " << *defect;
-    EXPECT_NEAR(enclosed_volume(mesh) / grain.porous_volume, 1.0, 0.02) << "adaptivity " << adaptivity;
+  for (const std::string& name : cultivar_names()) {
+    RandomStream random(2024);
+    const GrainShape shape = sample_grain_shape(cultivar_by_name(name), random);
+    const PorousLevelSet grain = make_porous_level_set(make_base_shape(shape), PorosityParameters{}, random);
+    EXPECT_GT(grain.pore_count, 0) << name;
+    EXPECT_GT(grain.porosity(), 0.0) << name;
+    for (const double adaptivity : {0.0, GrainRecipe{}.mesh_adaptivity}) {
+      const SurfaceMesh mesh = level_set_to_mesh(*grain.grid, adaptivity);
+      const auto defect = closed_manifold_defect(mesh);
+      EXPECT_FALSE(defect.has_value()) << name << ", adaptivity " << adaptivity << ": " << *defect;
+      EXPECT_NEAR(enclosed_volume(mesh) / grain.porous_volume, 1.0, 0.02) << name << ", adaptivity " << adaptivity;
+    }
   }
 }
 
