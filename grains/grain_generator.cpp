@@ -74,13 +74,7 @@ Grain make_grain(const GrainRecipe& recipe, std::uint64_t seed, std::optional<do
   // Eq. 2, [x, y, z] = P [r, s, t]: a uniform scale, which leaves the embedding unchanged.
   grain.render.V *= grain.shape.swell;
   grain.simulation.V *= grain.shape.swell;
-  double simulation_volume = 0.0;
-  for (Eigen::Index t = 0; t < grain.simulation.T.rows(); ++t)
-    simulation_volume += tet_signed_volume(grain.simulation.V.row(grain.simulation.T(t, 0)),
-                                           grain.simulation.V.row(grain.simulation.T(t, 1)),
-                                           grain.simulation.V.row(grain.simulation.T(t, 2)),
-                                           grain.simulation.V.row(grain.simulation.T(t, 3)));
-  grain.simulation_density = recipe.density * enclosed_volume(grain.render) / simulation_volume;
+  grain.simulation_density = recipe.density * enclosed_volume(grain.render) / total_volume(grain.simulation);
   return grain;
 }
 

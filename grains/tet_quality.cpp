@@ -32,6 +32,14 @@ double tet_signed_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3
   return (b - a).dot((c - a).cross(d - a)) / 6.0;
 }
 
+double total_volume(const VolumeMesh& mesh) {
+  double volume = 0.0;
+  for (Eigen::Index t = 0; t < mesh.T.rows(); ++t)
+    volume += tet_signed_volume(mesh.V.row(mesh.T(t, 0)), mesh.V.row(mesh.T(t, 1)), mesh.V.row(mesh.T(t, 2)),
+                                mesh.V.row(mesh.T(t, 3)));
+  return volume;
+}
+
 TetQuality measure_tet_quality(const VolumeMesh& mesh) {
   TetQuality q;
   if (mesh.T.rows() == 0) return q;

@@ -18,6 +18,9 @@ struct TetQuality {
 /// Signed volume of tet (a, b, c, d): (b − a)·((c − a)×(d − a)) / 6.
 double tet_signed_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
+/// Sum of the signed volumes of the tets of `mesh` [m³].
+double total_volume(const VolumeMesh& mesh);
+
 /// Quality of every tet of `mesh`, summarised.
 TetQuality measure_tet_quality(const VolumeMesh& mesh);
 

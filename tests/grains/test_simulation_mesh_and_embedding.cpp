@@ -40,10 +40,7 @@ TEST(SimulationMesh, DefaultsGiveTenToSixtyVerticesOfBoundedQuality) {
       EXPECT_LT(q.max_radius_edge_ratio, 4.0) << name;
       // The coarse mesh is inscribed in the smooth base surface; slender basmati grains lose
       // their tips (seen: 45–95% of the volume); the lumped masses are rescaled to match.
-      double volume = 0.0;
-      for (Eigen::Index t = 0; t < mesh.T.rows(); ++t)
-        volume += tet_signed_volume(mesh.V.row(mesh.T(t, 0)), mesh.V.row(mesh.T(t, 1)), mesh.V.row(mesh.T(t, 2)),
-                                    mesh.V.row(mesh.T(t, 3)));
+      const double volume = total_volume(mesh);
       EXPECT_GT(volume, 0.4 * enclosed_volume(base)) << name;
       EXPECT_LT(volume, 1.01 * enclosed_volume(base)) << name;
     }
