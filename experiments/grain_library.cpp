@@ -5,9 +5,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <sstream>
 
 #include "experiments/output.hpp"
 #include "experiments/png_image.hpp"
