@@ -69,8 +69,7 @@ int main(int argc, char** argv) {
 
   GrainLibrarySettings library;
   std::string library_out = "out/grains", cultivar_name = "japonica", base_mesh_path;
-  grains::Cultivar& cultivar = library.recipe.cultivar;
-  cultivar = grains::cultivar_by_name(cultivar_name);
+  grains::Cultivar& cultivar = library.recipe.cultivar;  // looked up by name after parsing
   grains::PorosityParameters& porosity = library.recipe.porosity;
   bool no_sections = false;
   CLI::App* grains_cmd = app.add_subcommand("grains", "procedural grains: render and simulation meshes, embedding");

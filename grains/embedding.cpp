@@ -22,21 +22,23 @@ struct BoundaryFace {
 
 std::vector<BoundaryFace> boundary_faces(const Tets& T) {
   constexpr int faces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
-  std::map<std::array<int, 3>, std::pair<int, int>> count;  // sorted corners -> (uses, tet)
-  std::map<std::array<int, 3>, Eigen::Vector3i> oriented;
+  struct Use {
+    int count = 0;
+    BoundaryFace face;
+  };
+  std::map<std::array<int, 3>, Use> uses;  // keyed by the sorted corners
   for (int t = 0; t < static_cast<int>(T.rows()); ++t)
     for (const auto& f : faces) {
-      std::array<int, 3> key = {T(t, f[0]), T(t, f[1]), T(t, f[2])};
-      const Eigen::Vector3i corners(key[0], key[1], key[2]);
+      const Eigen::Vector3i corners(T(t, f[0]), T(t, f[1]), T(t, f[2]));
+      std::array<int, 3> key = {corners[0], corners[1], corners[2]};
       std::sort(key.begin(), key.end());
-      auto& entry = count[key];
-      ++entry.first;
-      entry.second = t;
-      oriented[key] = corners;
+      Use& use = uses[key];
+      ++use.count;
+      use.face = {corners, t};
     }
   std::vector<BoundaryFace> boundary;
-  for (const auto& [key, entry] : count)
-    if (entry.first == 1) boundary.push_back({oriented[key], entry.second});
+  for (const auto& [key, use] : uses)
+    if (use.count == 1) boundary.push_back(use.face);
   return boundary;
 }
 
@@ -70,7 +72,10 @@ double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, cons
 Embedding embed_points(const Vertices& points, const VolumeMesh& mesh) {
   if (mesh.T.rows() == 0) throw std::invalid_argument("embedding: the simulation mesh has no tets");
   const std::vector<BoundaryFace> boundary = boundary_faces(mesh.T);
-  const auto corner = [&](int t, int k) -> Vec3 { return mesh.V.row(mesh.T(t, k)); };
+  const auto coordinates = [&](const Vec3& p, int t) {
+    const auto [a, b, c, d] = tet_corners(mesh, t);
+    return barycentric_coordinates(p, a, b, c, d);
+  };
   Embedding embedding;
   embedding.tet.resize(points.rows());
   embedding.weights.resize(points.rows(), 4);
@@ -80,7 +85,7 @@ Embedding embed_points(const Vertices& points, const VolumeMesh& mesh) {
     double best_min_weight = -std::numeric_limits<double>::infinity();
     Eigen::Vector4d best_weights = Eigen::Vector4d::Zero();
     for (int t = 0; t < static_cast<int>(mesh.T.rows()); ++t) {
-      const Eigen::Vector4d w = barycentric_coordinates(p, corner(t, 0), corner(t, 1), corner(t, 2), corner(t, 3));
+      const Eigen::Vector4d w = coordinates(p, t);
       if (w.minCoeff() > best_min_weight) {
         best_min_weight = w.minCoeff();
         best = t;
@@ -98,7 +103,7 @@ Embedding embed_points(const Vertices& points, const VolumeMesh& mesh) {
           best = face.tet;
         }
       }
-      best_weights = barycentric_coordinates(p, corner(best, 0), corner(best, 1), corner(best, 2), corner(best, 3));
+      best_weights = coordinates(p, best);
     }
     embedding.tet[i] = best;
     embedding.weights.row(i) = best_weights.transpose();

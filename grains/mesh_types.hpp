@@ -6,6 +6,8 @@
 
 #include <Eigen/Dense>
 
+#include <array>
+
 namespace rice::grains {
 
 using Vec3 = Eigen::Vector3d;
@@ -27,5 +29,17 @@ struct VolumeMesh {
   Vertices V;
   Tets T;
 };
+
+/// Corner positions of triangle f.
+inline std::array<Vec3, 3> triangle_corners(const SurfaceMesh& mesh, Eigen::Index f) {
+  return {mesh.V.row(mesh.F(f, 0)).transpose(), mesh.V.row(mesh.F(f, 1)).transpose(),
+          mesh.V.row(mesh.F(f, 2)).transpose()};
+}
+
+/// Corner positions of tetrahedron t.
+inline std::array<Vec3, 4> tet_corners(const VolumeMesh& mesh, Eigen::Index t) {
+  return {mesh.V.row(mesh.T(t, 0)).transpose(), mesh.V.row(mesh.T(t, 1)).transpose(),
+          mesh.V.row(mesh.T(t, 2)).transpose(), mesh.V.row(mesh.T(t, 3)).transpose()};
+}
 
 }  // namespace rice::grains

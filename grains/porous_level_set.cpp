@@ -50,7 +50,7 @@ std::vector<Sphere> surface_bumps(const SurfaceMesh& base, const PorosityParamet
   std::vector<double> cumulative_area(base.F.rows());
   double total = 0.0;
   for (Eigen::Index f = 0; f < base.F.rows(); ++f) {
-    const Vec3 a = base.V.row(base.F(f, 0)), b = base.V.row(base.F(f, 1)), c = base.V.row(base.F(f, 2));
+    const auto [a, b, c] = triangle_corners(base, f);
     total += 0.5 * (b - a).cross(c - a).norm();
     cumulative_area[f] = total;
   }
@@ -59,7 +59,7 @@ std::vector<Sphere> surface_bumps(const SurfaceMesh& base, const PorosityParamet
     const double target = random.uniform() * total;
     const Eigen::Index f = std::lower_bound(cumulative_area.begin(), cumulative_area.end(), target) -
                            cumulative_area.begin();
-    const Vec3 a = base.V.row(base.F(f, 0)), b = base.V.row(base.F(f, 1)), c = base.V.row(base.F(f, 2));
+    const auto [a, b, c] = triangle_corners(base, f);
     const double r1 = std::sqrt(random.uniform()), r2 = random.uniform();
     const Vec3 point = (1.0 - r1) * a + r1 * (1.0 - r2) * b + r1 * r2 * c;
     const Vec3 normal = (b - a).cross(c - a).normalized();

@@ -6,9 +6,7 @@ namespace rice::grains {
 double enclosed_volume(const SurfaceMesh& mesh) {
   double six_volume = 0.0;
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-    const Vec3 a = mesh.V.row(mesh.F(f, 0));
-    const Vec3 b = mesh.V.row(mesh.F(f, 1));
-    const Vec3 c = mesh.V.row(mesh.F(f, 2));
+    const auto [a, b, c] = triangle_corners(mesh, f);
     six_volume += a.dot(b.cross(c));
   }
   return six_volume / 6.0;
@@ -17,9 +15,7 @@ double enclosed_volume(const SurfaceMesh& mesh) {
 double surface_area(const SurfaceMesh& mesh) {
   double two_area = 0.0;
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-    const Vec3 a = mesh.V.row(mesh.F(f, 0));
-    const Vec3 b = mesh.V.row(mesh.F(f, 1));
-    const Vec3 c = mesh.V.row(mesh.F(f, 2));
+    const auto [a, b, c] = triangle_corners(mesh, f);
     two_area += (b - a).cross(c - a).norm();
   }
   return two_area / 2.0;

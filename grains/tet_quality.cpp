@@ -18,7 +18,7 @@ double circumradius(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& 
 
 // Interior dihedral angle at edge (i, j): the angle between the parts of p_k − p_i and
 // p_l − p_i perpendicular to the edge (k, l the other two vertices).
-double dihedral_angle(const Vec3 p[4], int i, int j, int k, int l) {
+double dihedral_angle(const std::array<Vec3, 4>& p, int i, int j, int k, int l) {
   const Vec3 edge = p[j] - p[i];
   const Vec3 to_k = p[k] - p[i], to_l = p[l] - p[i];
   const Vec3 u = (to_k - to_k.dot(edge) / edge.squaredNorm() * edge).normalized();
@@ -34,9 +34,10 @@ double tet_signed_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3
 
 double total_volume(const VolumeMesh& mesh) {
   double volume = 0.0;
-  for (Eigen::Index t = 0; t < mesh.T.rows(); ++t)
-    volume += tet_signed_volume(mesh.V.row(mesh.T(t, 0)), mesh.V.row(mesh.T(t, 1)), mesh.V.row(mesh.T(t, 2)),
-                                mesh.V.row(mesh.T(t, 3)));
+  for (Eigen::Index t = 0; t < mesh.T.rows(); ++t) {
+    const auto [a, b, c, d] = tet_corners(mesh, t);
+    volume += tet_signed_volume(a, b, c, d);
+  }
   return volume;
 }
 
@@ -47,8 +48,7 @@ TetQuality measure_tet_quality(const VolumeMesh& mesh) {
   q.min_dihedral_degrees = 180.0;
   constexpr int edges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
   for (Eigen::Index t = 0; t < mesh.T.rows(); ++t) {
-    const Vec3 p[4] = {mesh.V.row(mesh.T(t, 0)), mesh.V.row(mesh.T(t, 1)), mesh.V.row(mesh.T(t, 2)),
-                       mesh.V.row(mesh.T(t, 3))};
+    const std::array<Vec3, 4> p = tet_corners(mesh, t);
     q.min_volume = std::min(q.min_volume, tet_signed_volume(p[0], p[1], p[2], p[3]));
     double shortest = std::numeric_limits<double>::infinity();
     for (const auto& e : edges) {
