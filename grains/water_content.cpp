@@ -8,15 +8,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <stdexcept>
 #include <string>
-
-#ifndef RICE_GRAINS_DATA_DIR
-#error "RICE_GRAINS_DATA_DIR must name grains/data (set by grains/CMakeLists.txt)"
-#endif
 
 namespace rice::grains {
 namespace {
@@ -109,39 +103,6 @@ PelegFit fit_peleg(double temperature_c, const std::vector<double>& minutes, con
 }
 
 }  // namespace
-
-std::vector<AbsorptionSample> read_absorption_table(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path.string() + ": cannot open");
-  std::vector<AbsorptionSample> samples;
-  std::string line;
-  bool header = false;
-  for (int number = 1; std::getline(in, line); ++number) {
-    if (line.empty() || line[0] == '#') continue;
-    if (!header) {
-      if (line.rfind("temperature_c,soak_minutes,absorption_percent", 0) != 0)
-        throw std::runtime_error(path.string() + ":" + std::to_string(number) +
-                                 ": expected header temperature_c,soak_minutes,absorption_percent");
-      header = true;
-      continue;
-    }
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream words(line);
-    AbsorptionSample s;
-    if (!(words >> s.temperature_c >> s.soak_minutes >> s.absorption_percent))
-      throw std::runtime_error(path.string() + ":" + std::to_string(number) + ": expected three numbers");
-    if (!(s.soak_minutes > 0.0) || !(s.absorption_percent > 0.0))
-      throw std::runtime_error(path.string() + ":" + std::to_string(number) +
-                               ": soaking time and absorption must be positive");
-    samples.push_back(s);
-  }
-  if (samples.empty()) throw std::runtime_error(path.string() + ": no data rows");
-  return samples;
-}
-
-std::filesystem::path default_absorption_table() {
-  return std::filesystem::path(RICE_GRAINS_DATA_DIR) / "soaking_absorption.csv";
-}
 
 double DampingFit::beta(double seconds) const { return std::pow(10.0, -(a * std::log10(seconds) + b)); }
 

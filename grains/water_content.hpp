@@ -18,24 +18,11 @@
 // σ0 (eq. 8): a PLACEHOLDER linear map from W to σ0 until the shading work fits it.
 #pragma once
 
-#include <filesystem>
 #include <vector>
 
+#include "grains/absorption_table.hpp"
+
 namespace rice::grains {
-
-/// One measured (or estimated) point of a soaking curve.
-struct AbsorptionSample {
-  double temperature_c = 0.0;
-  double soak_minutes = 0.0;
-  double absorption_percent = 0.0;
-};
-
-/// Reads a CSV with header temperature_c,soak_minutes,absorption_percent; lines starting
-/// with '#' are comments. Throws std::runtime_error naming the file and line.
-std::vector<AbsorptionSample> read_absorption_table(const std::filesystem::path& path);
-
-/// The table shipped with the testbed (grains/data/soaking_absorption.csv).
-std::filesystem::path default_absorption_table();
 
 /// Peleg fit at one temperature: W(t) = t / (k1 + k2 t), t in minutes.
 struct PelegFit {

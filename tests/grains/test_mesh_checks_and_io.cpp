@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include <unistd.h>
@@ -132,22 +133,21 @@ TEST(MeshIo, ReadsObjOffAndAsciiPlyWithPolygons) {
 }
 
 TEST(MeshIo, BinaryPlyAndMeditRoundTripExactly) {
-  const auto folder = temporary_folder();
   SurfaceMesh surface = unit_tetrahedron();
   surface.V *= 1.2345678901234567e-3;
-  write_ply(folder / "t.ply", surface);
-  const SurfaceMesh back = read_surface_mesh(folder / "t.ply");
+  std::stringstream ply;
+  write_ply(ply, surface);
+  const SurfaceMesh back = read_surface_mesh(ply, SurfaceFormat::kPly, "t.ply");
   EXPECT_EQ(back.V, surface.V);
   EXPECT_EQ(back.F, surface.F);
 
   VolumeMesh volume{surface.V, Tets(1, 4)};
   volume.T << 0, 1, 2, 3;
-  write_medit(folder / "t.mesh", volume);
-  const VolumeMesh volume_back = read_medit(folder / "t.mesh");
+  std::stringstream medit;
+  write_medit(medit, volume);
+  const VolumeMesh volume_back = read_medit(medit, "t.mesh");
   EXPECT_EQ(volume_back.V, volume.V);
   EXPECT_EQ(volume_back.T, volume.T);
-  EXPECT_FALSE(std::filesystem::exists(folder / "t.ply.partial"));
-  std::filesystem::remove_all(folder);
 }
 
 TEST(MeshIo, BadFilesAreRefusedWithFileAndLine) {
@@ -168,6 +168,74 @@ TEST(MeshIo, BadFilesAreRefusedWithFileAndLine) {
   EXPECT_NE(message("shape.stl").find("unknown mesh extension"), std::string::npos);
   EXPECT_NE(message("missing.ply").find("cannot open"), std::string::npos);
   std::filesystem::remove_all(folder);
+}
+
+// The error message a reader gives for `text`, or "no error".
+template <class Read>
+std::string read_error(const std::string& text, Read read) {
+  std::istringstream in(text);
+  try {
+    read(in);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+std::string surface_error(const std::string& text, SurfaceFormat format) {
+  return read_error(text, [&](std::istream& in) { read_surface_mesh(in, format, "in.mesh"); });
+}
+
+std::string medit_error(const std::string& text) {
+  return read_error(text, [](std::istream& in) { read_medit(in, "in.mesh"); });
+}
+
+TEST(MeshIo, DeclaredCountsAreCappedByTheInputSize) {
+  // Each of these once asked for gigabytes or looped without reading; now each is refused at
+  // once, naming the input.
+  const std::string huge_ply = "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000000\n"
+                               "property float x\nproperty float y\nproperty float z\nend_header\n";
+  EXPECT_NE(surface_error(huge_ply, SurfaceFormat::kPly).find("in.mesh: element 'vertex' count"), std::string::npos)
+      << surface_error(huge_ply, SurfaceFormat::kPly);
+  const std::string empty_element = "ply\nformat binary_little_endian 1.0\nelement nothing 1000000000000\nend_header\n";
+  EXPECT_NE(surface_error(empty_element, SurfaceFormat::kPly).find("cannot fit"), std::string::npos);
+  const std::string long_list = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                "property float z\nelement face 1\nproperty list uint int vertex_indices\nend_header\n"
+                                "0 0 0\n1 0 0\n0 1 0\n4000000000 0 1 2\n";
+  EXPECT_NE(surface_error(long_list, SurfaceFormat::kPly).find("list count"), std::string::npos)
+      << surface_error(long_list, SurfaceFormat::kPly);
+  EXPECT_NE(surface_error("OFF\n3 2000000000 0\n", SurfaceFormat::kOff).find("face count"), std::string::npos);
+  EXPECT_NE(surface_error("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2000000000 0 1 2\n", SurfaceFormat::kOff)
+                .find("corner count"),
+            std::string::npos);
+  EXPECT_NE(medit_error("Vertices\n999999999999\n").find("vertex count"), std::string::npos);
+  EXPECT_NE(medit_error("Vertices\n-4\n").find("negative"), std::string::npos);
+}
+
+TEST(MeshIo, NonFiniteCoordinatesAndOutOfRangeIndicesAreRefused) {
+  std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\n"
+                       "property float y\nproperty float z\nend_header\n";
+  const float nan_vertex[3] = {0.0f, std::numeric_limits<float>::quiet_NaN(), 0.0f};
+  binary.append(reinterpret_cast<const char*>(nan_vertex), sizeof nan_vertex);
+  EXPECT_NE(surface_error(binary, SurfaceFormat::kPly).find("not finite"), std::string::npos);
+  const std::string float_index = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                  "property float z\nelement face 1\nproperty list uchar float vertex_indices\n"
+                                  "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1.5\n";
+  EXPECT_NE(surface_error(float_index, SurfaceFormat::kPly).find("not a vertex index"), std::string::npos);
+  EXPECT_NE(surface_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n", SurfaceFormat::kObj).find("bad face corner"),
+            std::string::npos);
+  EXPECT_NE(surface_error("v 0 0 0\nf 1 -2 -3\n", SurfaceFormat::kObj).find("out of range"), std::string::npos);
+  EXPECT_NE(surface_error("v 0 0 0\nf 1 2 99999999999\n", SurfaceFormat::kObj).find("out of range"),
+            std::string::npos);
+  const std::string tets = "Vertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\nTetrahedra\n1\n1 2 3 ";
+  EXPECT_NE(medit_error(tets + "5 0\nEnd\n").find("tetrahedron 1 refers to vertex 5"), std::string::npos);
+  EXPECT_NE(medit_error(tets + "0 0\nEnd\n").find("refers to vertex 0"), std::string::npos);
+  EXPECT_NE(medit_error("Vertices\n1\n0 inf 0 0\n").find("vertex 1"), std::string::npos);
+  EXPECT_NE(medit_error("Vertices\n1\n0 0 0 0\nEnd\n").find("Tetrahedra"), std::string::npos);
+  EXPECT_NE(surface_error("ply\nformat binary_big_endian 1.0\nend_header\n", SurfaceFormat::kPly).find("not supported"),
+            std::string::npos);
+  EXPECT_NE(surface_error("ply\nformat ascii 1.0\nelement vertex 1\n", SurfaceFormat::kPly).find("end_header"),
+            std::string::npos);
 }
 
 }  // namespace

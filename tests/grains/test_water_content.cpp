@@ -87,6 +87,14 @@ TEST(WaterContent, BadTablesAreRefusedWithFileAndLine) {
             std::string::npos);
   EXPECT_NE(message("temperature_c,soak_minutes,absorption_percent\n5,1,3\n5,2,4\n5,3,5\n").find("two or more"),
             std::string::npos);
+  EXPECT_NE(message("temperature_c,soak_minutes,absorption_percent\n-5,1,3\n").find("temperature_c -5 must be in"),
+            std::string::npos);
+  EXPECT_NE(message("temperature_c,soak_minutes,absorption_percent\n5,1,3,7\n").find(":2: expected three"),
+            std::string::npos);
+  EXPECT_NE(message("temperature_c,soak_minutes,absorption_percent\n5,1,nan\n").find("must be positive"),
+            std::string::npos);
+  EXPECT_NE(message("temperature_c,soak_minutes,absorption_percent\n5,1,3x\n").find("'3x' is not a number"),
+            std::string::npos);
   std::filesystem::remove(path);
   EXPECT_NE(message("").find("no data rows"), std::string::npos);
   std::filesystem::remove(path);

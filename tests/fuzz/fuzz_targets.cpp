@@ -1,0 +1,105 @@
+// Fuzz target entries (see fuzz_targets.hpp).
+#include "tests/fuzz/fuzz_targets.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <optional>
+#include <sstream>
+
+#include "grains/absorption_table.hpp"
+#include "grains/mesh_io.hpp"
+
+namespace rice::fuzz {
+namespace {
+
+constexpr const char* kName = "fuzz-input";
+
+void expect(bool promise_kept, const std::string& what) {
+  if (!promise_kept) throw Finding(what);
+}
+
+// The input as a seekable stream (readers cap declared counts by the bytes left).
+std::istringstream stream_of(std::string_view bytes) { return std::istringstream(std::string(bytes)); }
+
+// Runs `read`. An input error must be a std::runtime_error naming the input; it gives nullopt.
+template <class Read>
+auto read_or_refuse(Read read) -> std::optional<decltype(read())> {
+  try {
+    return read();
+  } catch (const Finding&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    expect(std::string_view(e.what()).starts_with(kName), std::string("the error does not name the input: ") + e.what());
+    return std::nullopt;
+  }
+}
+
+// Memory bounded by the input: a few dozen bytes of mesh per byte read, plus a constant.
+void expect_size_bounded(size_t mesh_bytes, size_t input_bytes) {
+  expect(mesh_bytes <= 64 * input_bytes + 4096,
+         std::to_string(input_bytes) + " input bytes made a mesh of " + std::to_string(mesh_bytes) + " bytes");
+}
+
+template <class Matrix>
+bool same_bits(const Matrix& a, const Matrix& b) {
+  return a.rows() == b.rows() && std::memcmp(a.data(), b.data(), sizeof(typename Matrix::Scalar) * a.size()) == 0;
+}
+
+void read_surface(std::string_view bytes, grains::SurfaceFormat format) {
+  std::istringstream in = stream_of(bytes);
+  const auto mesh = read_or_refuse([&] { return grains::read_surface_mesh(in, format, kName); });
+  if (!mesh) return;
+  expect(mesh->V.allFinite(), "a vertex is not finite");
+  expect(mesh->F.rows() > 0, "no faces, yet no error");
+  expect(mesh->F.minCoeff() >= 0 && mesh->F.maxCoeff() < mesh->V.rows(), "a face index is out of range");
+  expect_size_bounded(sizeof(double) * mesh->V.size() + sizeof(int) * mesh->F.size(), bytes.size());
+  std::stringstream ply;
+  grains::write_ply(ply, *mesh);
+  const grains::SurfaceMesh back = grains::read_surface_mesh(ply, grains::SurfaceFormat::kPly, kName);
+  expect(same_bits(back.V, mesh->V) && same_bits(back.F, mesh->F), "the PLY round trip changed the mesh");
+}
+
+void read_obj(std::string_view bytes) { read_surface(bytes, grains::SurfaceFormat::kObj); }
+void read_off(std::string_view bytes) { read_surface(bytes, grains::SurfaceFormat::kOff); }
+void read_ply(std::string_view bytes) { read_surface(bytes, grains::SurfaceFormat::kPly); }
+
+void medit_round_trip(std::string_view bytes) {
+  std::istringstream in = stream_of(bytes);
+  const auto mesh = read_or_refuse([&] { return grains::read_medit(in, kName); });
+  if (!mesh) return;
+  expect(mesh->V.allFinite(), "a vertex is not finite");
+  expect(mesh->T.rows() > 0, "no tetrahedra, yet no error");
+  expect(mesh->T.minCoeff() >= 0 && mesh->T.maxCoeff() < mesh->V.rows(), "a tetrahedron index is out of range");
+  expect_size_bounded(sizeof(double) * mesh->V.size() + sizeof(int) * mesh->T.size(), bytes.size());
+  std::stringstream medit;
+  grains::write_medit(medit, *mesh);
+  const grains::VolumeMesh back = grains::read_medit(medit, kName);
+  expect(same_bits(back.V, mesh->V) && same_bits(back.T, mesh->T), "the MEDIT round trip changed the mesh");
+}
+
+void read_absorption(std::string_view bytes) {
+  std::istringstream in = stream_of(bytes);
+  const auto samples = read_or_refuse([&] { return grains::read_absorption_table(in, kName); });
+  if (!samples) return;
+  expect(!samples->empty(), "no rows, yet no error");
+  for (const grains::AbsorptionSample& s : *samples)
+    expect(s.temperature_c >= 0.0 && s.temperature_c <= 100.0 && s.soak_minutes > 0.0 && s.soak_minutes <= 1e5 &&
+               s.absorption_percent > 0.0 && s.absorption_percent <= 1000.0,
+           "a sample outside the documented ranges");
+}
+
+}  // namespace
+
+const std::vector<Target>& targets() {
+  static const std::vector<Target> all = {
+      {"obj", read_obj}, {"off", read_off}, {"ply", read_ply}, {"medit", medit_round_trip}, {"absorption", read_absorption}};
+  return all;
+}
+
+const Target& target_named(std::string_view name) {
+  for (const Target& target : targets())
+    if (name == target.name) return target;
+  throw std::invalid_argument("no fuzz target '" + std::string(name) + "'");
+}
+
+}  // namespace rice::fuzz
