@@ -2,8 +2,6 @@
 // convergence_study.hpp.
 #include "experiments/convergence_study.hpp"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -12,6 +10,7 @@
 #include <map>
 #include <tuple>
 
+#include "experiments/interrupt.hpp"
 #include "experiments/output.hpp"
 #include "fem_reference/implicit_solver.hpp"
 #include "fem_reference/trajectory_error.hpp"
@@ -61,6 +60,7 @@ Reference run_reference(const ConvergenceSettings& s, const Case& c) {
   const auto start = Clock::now();
   try {
     for (int f = 0; f < frame_count(s); ++f) {
+      stop_point();
       for (int n = 0; n < c.substeps; ++n) {
         const bool sample = n == 0 && f % s.sample_every == 0;
         if (sample) ref.samples.push_back({model.particles.x, model.particles.v, {}});
@@ -114,6 +114,7 @@ ConvergenceRun run_position_based(const ConvergenceSettings& s, const Reference&
   try {
     xpbd::Solver solver(model, settings);
     for (int f = 0; f < frame_count(s); ++f) {
+      stop_point();
       solver.step();
       error.add_frame(model.particles.x, ref.frames[f + 1]);
     }
@@ -214,17 +215,23 @@ ConvergenceSettings ConvergenceSettings::quick() {
   return s;
 }
 
-std::vector<ConvergenceRun> run_convergence_study(const ConvergenceSettings& s) {
+void validate(const ConvergenceSettings& s) {
   if (!(s.duration >= s.frame) || s.substeps.empty() || s.iterations.empty() || s.sample_every < 1 ||
       std::find(s.resolutions.begin(), s.resolutions.end(), s.grid_resolution) == s.resolutions.end())
     throw std::invalid_argument("convergence study: need duration >= one frame, substeps and iterations, "
                                 "sample_every >= 1, and grid_resolution among the resolutions");
+  if (!(s.bar.young > 0.0) || !(s.rayleigh_time > 0.0))
+    throw std::invalid_argument("convergence study: --young and --rayleigh-time must be positive");
+}
+
+std::vector<ConvergenceRun> run_convergence_study(const ConvergenceSettings& s) {
+  validate(s);
   const std::vector<Case> cases = reference_cases(s);
   std::vector<Reference> references(cases.size());
   {
     Progress progress("convergence: references", static_cast<int>(cases.size()));
     std::atomic<int> done = 0;
-    tbb::parallel_for(size_t{0}, cases.size(), [&](size_t i) {
+    for_each_item(static_cast<int>(cases.size()), [&](int i) {
       references[i] = run_reference(s, cases[i]);
       progress.update(++done);
     });
@@ -251,7 +258,7 @@ std::vector<ConvergenceRun> run_convergence_study(const ConvergenceSettings& s) 
   {
     Progress progress("convergence: position-based runs", static_cast<int>(jobs.size()));
     std::atomic<int> done = 0;
-    tbb::parallel_for(size_t{0}, jobs.size(), [&](size_t j) {
+    for_each_item(static_cast<int>(jobs.size()), [&](int j) {
       runs[j] = run_position_based(s, references[jobs[j].reference], jobs[j].iterations, jobs[j].variant);
       progress.update(++done);
     });
@@ -269,6 +276,7 @@ std::vector<ConvergenceRun> run_convergence_study(const ConvergenceSettings& s) 
 }
 
 void convergence_study_command(const ConvergenceSettings& s, const std::filesystem::path& folder) {
+  validate(s);
   make_output_folder(folder);
   const auto start = Clock::now();
   const std::vector<ConvergenceRun> runs = run_convergence_study(s);
@@ -281,7 +289,7 @@ void convergence_study_command(const ConvergenceSettings& s, const std::filesyst
                    cell(r.trajectory_error), cell(r.max_frame_error), cell(r.step_distance),
                    cell(r.primal_residual), cell(r.constraint_residual), cell(r.pareto ? 1 : 0),
                    r.failed ? "failed" : "ok"});
-  write_text_atomically(folder / "convergence.csv", table.text());
+  write_file_atomically(folder / "convergence.csv", table.text());
 
   print_table(s, runs, "Trajectory RMS error", &ConvergenceRun::trajectory_error);
   print_table(s, runs, "One-step distance to the Newton solution", &ConvergenceRun::step_distance);
@@ -340,7 +348,7 @@ do for [scene in 'hanging-cantilever twisted-bar'] {
 }
 unset multiplot
 )");
-  write_text_atomically(folder / "run_info.txt",
+  write_file_atomically(folder / "run_info.txt",
                         run_info({{"study", "convergence"},
                                   {"duration_s", cell(s.duration)},
                                   {"young_pa", cell(s.bar.young)},

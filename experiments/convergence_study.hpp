@@ -63,6 +63,10 @@ struct ConvergenceRun {
 
 std::vector<ConvergenceRun> run_convergence_study(const ConvergenceSettings& settings);
 
+/// Throws std::invalid_argument when the settings cannot make a study (duration under one
+/// frame, empty grids, the grid resolution not among the resolutions).
+void validate(const ConvergenceSettings& settings);
+
 void convergence_study_command(const ConvergenceSettings& settings, const std::filesystem::path& folder);
 
 }  // namespace rice::experiments

@@ -1,13 +1,13 @@
 // Figure 8 and 9 drivers (see grain_figures.hpp).
 #include "experiments/grain_figures.hpp"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <iostream>
 
 #include "experiments/grain_library.hpp"
+#include "experiments/interrupt.hpp"
 #include "experiments/output.hpp"
 #include "grains/surface_measures.hpp"
 
@@ -55,19 +55,23 @@ void grain_sizes_figure_command(std::uint64_t seed, const std::filesystem::path&
   make_output_folder(folder);
   const auto seeds = child_seeds(seed, n);
   std::vector<grains::Grain> grains_built(n);
-  tbb::parallel_for(0, n, [&](int i) {
+  Progress progress("figure 8: grains", n);
+  std::atomic<int> done = 0;
+  for_each_item(n, [&](int i) {
     grains_built[i] = grains::make_grain(recipe, seeds[i], swells[i]);
     write_grain_files(grains_built[i], folder, "grain_" + std::to_string(i), false);
+    progress.update(++done);
   });
+  progress.finish();
   CsvTable table(grain_table_columns());
   std::vector<RgbImage> sections;
   for (int i = 0; i < n; ++i) {
     table.add_row(grain_table_row(i, i, "japonica", grains_built[i], swells[i], Eigen::Quaterniond::Identity()));
     sections.push_back(cross_section_image(grains_built[i], kSectionPixel));
   }
-  write_text_atomically(folder / "figure8.csv", table.text());
+  write_file_atomically(folder / "figure8.csv", table.text());
   write_png(folder / "figure8_sections.png", side_by_side(sections, 20));
-  write_text_atomically(folder / "run_info.txt",
+  write_file_atomically(folder / "run_info.txt",
                         run_info({{"figure", "8"},
                                   {"seed", cell(static_cast<long>(seed))},
                                   {"section_pixel_m", cell(kSectionPixel)},
@@ -89,11 +93,15 @@ void cultivars_figure_command(std::uint64_t seed, int count, const std::filesyst
     const auto grain_seeds = child_seeds(seeds[c], count);
     std::vector<grains::Vec3> extents(count);
     grains::Grain first;
-    tbb::parallel_for(0, count, [&](int i) {
+    Progress progress("figure 9: " + names[c], count);
+    std::atomic<int> done = 0;
+    for_each_item(count, [&](int i) {
       grains::Grain grain = grains::make_grain(recipe, grain_seeds[i]);
       extents[i] = grains::bounding_box_extent(grain.render.V);
       if (i == 0) first = std::move(grain);
+      progress.update(++done);
     });
+    progress.finish();
     write_grain_files(first, folder, names[c], false);
     sections.push_back(cross_section_image(first, kSectionPixel));
 
@@ -112,9 +120,9 @@ void cultivars_figure_command(std::uint64_t seed, int count, const std::filesyst
                 << cooked * 1e3 << " mm; generated " << mean * 1e3 << " ± " << std::sqrt(square) * 1e3 << " mm\n";
     }
   }
-  write_text_atomically(folder / "figure9.csv", table.text());
+  write_file_atomically(folder / "figure9.csv", table.text());
   write_png(folder / "figure9_sections.png", side_by_side(sections, 20));
-  write_text_atomically(folder / "run_info.txt",
+  write_file_atomically(folder / "run_info.txt",
                         run_info({{"figure", "9"},
                                   {"seed", cell(static_cast<long>(seed))},
                                   {"grains_per_cultivar", cell(count)},

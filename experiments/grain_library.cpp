@@ -1,14 +1,13 @@
 // `rice grains` driver (see grain_library.hpp).
 #include "experiments/grain_library.hpp"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 
+#include "experiments/interrupt.hpp"
 #include "experiments/output.hpp"
 #include "experiments/png_image.hpp"
 #include "grains/cross_section.hpp"
@@ -30,7 +29,7 @@ void write_embedding_csv(const grains::Embedding& embedding, const std::filesyst
   for (Eigen::Index i = 0; i < embedding.tet.size(); ++i)
     table.add_row({cell(static_cast<long>(i)), cell(embedding.tet[i]), cell(embedding.weights(i, 0)),
                    cell(embedding.weights(i, 1)), cell(embedding.weights(i, 2)), cell(embedding.weights(i, 3))});
-  write_text_atomically(path, table.text());
+  write_file_atomically(path, table.text());
 }
 
 }  // namespace
@@ -83,18 +82,23 @@ RgbImage cross_section_image(const grains::Grain& grain, double pixel) {
 
 void write_grain_files(const grains::Grain& grain, const std::filesystem::path& folder, const std::string& stem,
                        bool section) {
-  grains::write_ply(folder / (stem + ".ply"), grain.render);
-  grains::write_medit(folder / (stem + ".mesh"), grain.simulation);
+  write_file_atomically(folder / (stem + ".ply"), [&](std::ostream& out) { grains::write_ply(out, grain.render); });
+  write_file_atomically(folder / (stem + ".mesh"),
+                        [&](std::ostream& out) { grains::write_medit(out, grain.simulation); });
   write_embedding_csv(grain.embedding, folder / (stem + "_embedding.csv"));
   if (section)
     write_png(folder / (stem + "_section.png"),
               cross_section_image(grain, 0.25 * grain.level_set.voxel_size * grain.shape.swell));
 }
 
-void grain_library_command(const GrainLibrarySettings& settings, const std::filesystem::path& folder) {
+void validate(const GrainLibrarySettings& settings) {
   grains::validate(settings.recipe);
   if (settings.count < 1) throw std::invalid_argument("--count must be >= 1");
   if (settings.variants < 0) throw std::invalid_argument("--variants must be >= 0");
+}
+
+void grain_library_command(const GrainLibrarySettings& settings, const std::filesystem::path& folder) {
+  validate(settings);
   const auto start = std::chrono::steady_clock::now();
   make_output_folder(folder);
 
@@ -112,7 +116,7 @@ void grain_library_command(const GrainLibrarySettings& settings, const std::file
   std::vector<grains::GrainTimings> timings(generated);
   Progress progress(instanced ? "variants" : "grains", generated);
   std::atomic<int> done{0};
-  tbb::parallel_for(0, generated, [&](int i) {
+  for_each_item(generated, [&](int i) {
     grains::Grain grain =
         grains::make_grain(settings.recipe, seeds[i], instanced ? std::optional<double>(1.0) : std::nullopt);
     write_grain_files(grain, folder, numbered(instanced ? "variant" : "grain", i), settings.sections);
@@ -136,7 +140,7 @@ void grain_library_command(const GrainLibrarySettings& settings, const std::file
   } else {
     for (const auto& row : rows) table.add_row(row);
   }
-  write_text_atomically(folder / "grains.csv", table.text());
+  write_file_atomically(folder / "grains.csv", table.text());
   const double instancing_seconds = seconds_since(instancing_start);
 
   grains::GrainTimings mean;  // per generated grain, one thread
@@ -151,7 +155,7 @@ void grain_library_command(const GrainLibrarySettings& settings, const std::file
             << " s (" << mean_grain_seconds << " s per grain: sum of its stage times, files excluded)";
   if (instanced) std::cout << "; " << settings.count << " instances in " << instancing_seconds << " s";
   std::cout << '\n';
-  write_text_atomically(folder / "run_info.txt",
+  write_file_atomically(folder / "run_info.txt",
                         run_info({{"command", "grains"},
                                   {"cultivar", cultivar},
                                   {"count", cell(settings.count)},

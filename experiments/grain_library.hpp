@@ -24,6 +24,9 @@ struct GrainLibrarySettings {
   bool sections = true;  ///< write cross-section PNGs
 };
 
+/// Throws std::invalid_argument naming the setting that is out of range.
+void validate(const GrainLibrarySettings& settings);
+
 /// Checks the settings, then writes the set into `folder`. Nothing is written when the
 /// settings are bad.
 void grain_library_command(const GrainLibrarySettings& settings, const std::filesystem::path& folder);

@@ -1,11 +1,14 @@
 // Spring–mass oscillator against its analytic period and decay; see oscillator_study.hpp.
 #include "experiments/oscillator_study.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
+#include "experiments/interrupt.hpp"
 #include "experiments/output.hpp"
 #include "fem_reference/implicit_solver.hpp"
 #include "xpbd/solver.hpp"
@@ -65,6 +68,7 @@ OscillationMeasurement simulate_oscillator(const OscillatorSettings& s, int subs
   const int steps = static_cast<int>(std::round(s.duration / h));
   std::vector<double> t{0.0}, x{s.amplitude};
   for (int k = 1; k <= steps; ++k) {
+    stop_point();
     if (integrator == Integrator::kXpbd) xpbd.step();
     else reference.step();
     t.push_back(k * h);
@@ -81,7 +85,17 @@ OscillationMeasurement analytic_oscillator(const OscillatorSettings& s, double d
   return {2.0 * std::numbers::pi / (omega0 * std::sqrt(1.0 - zeta * zeta)), zeta * omega0};
 }
 
+void validate(const OscillatorSettings& s) {
+  if (s.substeps.empty() || *std::min_element(s.substeps.begin(), s.substeps.end()) < 1)
+    throw std::invalid_argument("oscillator: --substeps needs counts >= 1");
+  const double critical = 2.0 * std::sqrt(s.stiffness * s.mass);
+  if (!(s.damping >= 0.0 && s.damping < critical))
+    throw std::invalid_argument("oscillator: --damping must be in [0, " + std::to_string(critical) +
+                                ") (below critical damping)");
+}
+
 void oscillator_study_command(const OscillatorSettings& settings, const std::filesystem::path& folder) {
+  validate(settings);
   make_output_folder(folder);
   const auto start = std::chrono::steady_clock::now();
   CsvTable table({"solver", "damping_ns_per_m", "substeps_per_frame", "substep_s", "period_s", "period_exact_s",
@@ -104,7 +118,7 @@ void oscillator_study_command(const OscillatorSettings& settings, const std::fil
       }
     }
   }
-  write_text_atomically(folder / "oscillator.csv", table.text());
+  write_file_atomically(folder / "oscillator.csv", table.text());
   render_plot(folder, "oscillator", R"(set terminal pngcairo size 1200,500
 set output 'oscillator.png'
 set datafile separator ','
@@ -128,7 +142,7 @@ plot 'oscillator.csv' using (xpbd(0) ? $11 : 1/0):7 with linespoints title 'XPBD
      '' using (reference(1) ? $11 : 1/0):7 with points pt 6 ps 1.5 title 'reference, beta > 0'
 unset multiplot
 )");
-  write_text_atomically(folder / "run_info.txt",
+  write_file_atomically(folder / "run_info.txt",
                         run_info({{"study", "oscillator"},
                                   {"mass_kg", cell(settings.mass)},
                                   {"stiffness_n_per_m", cell(settings.stiffness)},

@@ -2,16 +2,23 @@
 #include "experiments/output.hpp"
 
 #include <Eigen/Core>
+#include <fcntl.h>
 #include <oneapi/tbb/version.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
 #include <charconv>
+#include <cstring>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
+
+#include "experiments/interrupt.hpp"
 
 namespace rice::experiments {
 
@@ -21,16 +28,56 @@ void make_output_folder(const std::filesystem::path& folder) {
   if (error) throw std::runtime_error("cannot create output folder " + folder.string() + ": " + error.message());
 }
 
-void write_text_atomically(const std::filesystem::path& path, const std::string& text) {
-  const std::filesystem::path temporary = path.string() + ".partial";
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out << text;
-    if (!out) throw std::runtime_error("cannot write " + temporary.string());
+namespace {
+
+[[noreturn]] void fail_write(const std::filesystem::path& path, const std::string& what) {
+  throw std::runtime_error("cannot write " + path.string() + ": " + what + ": " + std::strerror(errno));
+}
+
+void write_all(int fd, std::string_view bytes, const std::filesystem::path& path) {
+  while (!bytes.empty()) {
+    const ssize_t written = ::write(fd, bytes.data(), bytes.size());
+    if (written < 0 && errno == EINTR) continue;
+    if (written <= 0) fail_write(path, "write");
+    bytes.remove_prefix(static_cast<size_t>(written));
   }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) throw std::runtime_error("cannot rename " + temporary.string() + " to " + path.string());
+}
+
+}  // namespace
+
+void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
+  static std::atomic<unsigned> counter = 0;
+  const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string.
+  std::string hidden = ".";
+  for (const std::string& piece : {path.filename().string(), std::string(".partial-"), std::to_string(::getpid()),
+                                   std::string("-"), std::to_string(counter++)})
+    hidden += piece;
+  const std::filesystem::path temporary = folder / hidden;
+  int fd = ::open(folder.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0644);
+  const bool unnamed = fd >= 0;
+  if (!unnamed) fd = ::open(temporary.c_str(), O_CREAT | O_TRUNC | O_WRONLY | O_CLOEXEC, 0644);
+  if (fd < 0) fail_write(path, "open");
+  try {
+    write_all(fd, bytes, path);
+    // The unnamed file gets its temporary name only now, complete.
+    const std::string self = "/proc/self/fd/" + std::to_string(fd);
+    if (unnamed) ::unlink(temporary.c_str());  // a stale name of a killed process with our pid
+    if (unnamed && ::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, temporary.c_str(), AT_SYMLINK_FOLLOW) != 0)
+      fail_write(path, "link");
+    if (::close(std::exchange(fd, -1)) != 0) fail_write(path, "close");
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) fail_write(path, "rename");
+  } catch (...) {
+    if (fd >= 0) ::close(fd);
+    ::unlink(temporary.c_str());
+    throw;
+  }
+}
+
+void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write) {
+  std::ostringstream out;
+  write(out);
+  write_file_atomically(path, out.view());
 }
 
 CsvTable::CsvTable(std::vector<std::string> header) : header_(std::move(header)) {}
@@ -64,7 +111,7 @@ std::string cell(long value) { return std::to_string(value); }
 bool render_plot(const std::filesystem::path& folder, const std::string& name,
                  const std::string& gnuplot_script) {
   const std::filesystem::path script = folder / (name + ".gp");
-  write_text_atomically(script, gnuplot_script);
+  write_file_atomically(script, gnuplot_script);
   if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) {
     std::cerr << "note: gnuplot is not installed; run 'gnuplot " << script.string()
               << "' later to make the plot\n";
@@ -83,14 +130,18 @@ bool render_plot(const std::filesystem::path& folder, const std::string& name,
 
 Progress::Progress(std::string label, int total)
     : label_(std::move(label)), total_(total), enabled_(isatty(fileno(stderr)) != 0),
-      start_(std::chrono::steady_clock::now()) {}
+      start_(std::chrono::steady_clock::now()) {
+  set_activity(label_ + " 0/" + std::to_string(total_) + " done");
+}
 
 void Progress::update(int done) {
-  if (!enabled_ || done <= 0) return;
   const std::lock_guard lock(mutex_);
-  const double elapsed = seconds_since(start_);
-  const double left = elapsed / done * (total_ - done);
-  std::fprintf(stderr, "\r%s %d/%d, %.0f s left   ", label_.c_str(), done, total_, left);
+  done_ = std::max(done_, done);
+  set_activity(label_ + " " + std::to_string(done_) + "/" + std::to_string(total_) + " done");
+  if (enabled_ && done > 0) {
+    const double left = seconds_since(start_) / done * (total_ - done);
+    std::fprintf(stderr, "\r%s %d/%d, %.0f s left   ", label_.c_str(), done, total_, left);
+  }
 }
 
 void Progress::finish() {

@@ -1,13 +1,16 @@
-// What every study and figure driver writes: an output folder, files written atomically (a
-// temporary name, then rename, so a failed run leaves nothing half-written), CSV tables with
-// a header row, gnuplot scripts rendered to PNG next to their CSV, a run-info file, and
+// What every study and figure driver writes: an output folder, files written atomically (so
+// a run that fails, is interrupted or is killed leaves complete files or none), CSV tables
+// with a header row, gnuplot scripts rendered to PNG next to their CSV, a run-info file, and
 // progress lines on a terminal (quiet when stderr is not a terminal, as in CI).
 #pragma once
 
 #include <chrono>
-#include <mutex>
 #include <filesystem>
+#include <functional>
+#include <iosfwd>
+#include <mutex>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace rice::experiments {
@@ -15,8 +18,16 @@ namespace rice::experiments {
 /// Creates `folder` (and parents); throws with the path on failure.
 void make_output_folder(const std::filesystem::path& folder);
 
-/// Writes `text` to `path` via a temporary file in the same folder and a rename.
-void write_text_atomically(const std::filesystem::path& path, const std::string& text);
+/// Writes `bytes` to `path` so that `path` is, at every instant, either absent, its old
+/// complete content or the new complete content, even if the process is killed: the bytes go
+/// to an unnamed file in the same folder (Linux O_TMPFILE) that is named and renamed into
+/// place once written. Where the file system has no unnamed files, a hidden temporary
+/// `.<name>.partial-<pid>-<n>` is used instead (a kill then leaves that behind, never `path`).
+/// Throws std::runtime_error naming the path.
+void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
+
+/// The same for a writer that streams its content (e.g. grains::write_ply).
+void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write);
 
 /// A CSV table built row by row; numbers are written with full precision.
 class CsvTable {
@@ -41,7 +52,8 @@ inline std::string cell(int value) { return cell(static_cast<long>(value)); }
 bool render_plot(const std::filesystem::path& folder, const std::string& name,
                  const std::string& gnuplot_script);
 
-/// Progress lines "label k/N, ETA" on stderr, only when stderr is a terminal. Thread-safe.
+/// Progress of a long loop: lines "label k/N, ETA" on stderr when stderr is a terminal, and
+/// the activity reported if the run is interrupted (interrupt.hpp). Thread-safe.
 class Progress {
  public:
   Progress(std::string label, int total);
@@ -51,6 +63,7 @@ class Progress {
  private:
   std::string label_;
   int total_;
+  int done_ = 0;
   bool enabled_;
   std::chrono::steady_clock::time_point start_;
   std::mutex mutex_;

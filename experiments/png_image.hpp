@@ -1,8 +1,9 @@
-// 8-bit RGB images written as PNG (libpng), through a temporary name and a rename.
+// 8-bit RGB images encoded as PNG (libpng) and written atomically.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace rice::experiments {
@@ -19,7 +20,10 @@ struct RgbImage {
   }
 };
 
-/// Writes `image` to `path`; throws std::runtime_error naming the path on failure.
+/// The PNG file's bytes.
+std::string encode_png(const RgbImage& image);
+
+/// Writes `image` to `path` atomically (write_file_atomically); throws std::runtime_error.
 void write_png(const std::filesystem::path& path, const RgbImage& image);
 
 }  // namespace rice::experiments

@@ -9,11 +9,28 @@
 
 namespace rice::experiments {
 
+namespace {
+
+std::filesystem::path table_path(const WaterAbsorptionFigureSettings& settings) {
+  return settings.table.empty() ? grains::default_absorption_table() : settings.table;
+}
+
+}  // namespace
+
+void validate(const WaterAbsorptionFigureSettings& settings) {
+  const std::filesystem::path table = table_path(settings);
+  try {
+    grains::WaterContentModel model(grains::read_absorption_table(table));
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(table.string() + ": " + e.what());
+  }
+}
+
 void water_absorption_figure_command(const WaterAbsorptionFigureSettings& settings,
                                      const std::filesystem::path& folder) {
+  validate(settings);
   const auto start = std::chrono::steady_clock::now();
-  const std::filesystem::path table =
-      settings.table.empty() ? grains::default_absorption_table() : settings.table;
+  const std::filesystem::path table = table_path(settings);
   const std::vector<grains::AbsorptionSample> samples = grains::read_absorption_table(table);
   const grains::DampingReference reference;
   const grains::WaterContentModel model(samples, reference);
@@ -26,7 +43,7 @@ void water_absorption_figure_command(const WaterAbsorptionFigureSettings& settin
                   cell(std::log10(s.absorption_percent /
                                   (reference.beta * model.absorption_percent(reference.soak_minutes,
                                                                              reference.temperature_c))))});
-  write_text_atomically(folder / "absorption_data.csv", data.text());
+  write_file_atomically(folder / "absorption_data.csv", data.text());
 
   // Fitted curves: each temperature's own Peleg fit, and the temperature-interpolated model,
   // from 1 to 180 minutes.
@@ -42,14 +59,14 @@ void water_absorption_figure_command(const WaterAbsorptionFigureSettings& settin
                       cell(grains::WaterContentModel::scattering_sigma0(w))});
     }
   }
-  write_text_atomically(folder / "absorption_curves.csv", curves.text());
+  write_file_atomically(folder / "absorption_curves.csv", curves.text());
 
   CsvTable peleg({"temperature_c", "k1_min_per_percent", "k2_per_percent", "saturation_percent", "rms_residual_percent",
                   "samples"});
   for (const grains::PelegFit& fit : model.peleg_fits())
     peleg.add_row({cell(fit.temperature_c), cell(fit.k1), cell(fit.k2), cell(1.0 / fit.k2), cell(fit.rms_residual),
                    cell(fit.samples)});
-  write_text_atomically(folder / "peleg_fits.csv", peleg.text());
+  write_file_atomically(folder / "peleg_fits.csv", peleg.text());
 
   CsvTable damping({"temperature_c", "a", "b", "rms_residual_log10", "r_squared", "samples"});
   for (const grains::DampingFit& fit : model.damping_fits()) {
@@ -58,7 +75,7 @@ void water_absorption_figure_command(const WaterAbsorptionFigureSettings& settin
     std::cout << "eq. 4 at " << fit.temperature_c << " C: a = " << fit.a << ", b = " << fit.b
               << ", rms residual = " << fit.rms_residual << " (log10), R^2 = " << fit.r_squared << '\n';
   }
-  write_text_atomically(folder / "damping_fits.csv", damping.text());
+  write_file_atomically(folder / "damping_fits.csv", damping.text());
 
   std::string temperatures;
   for (const grains::PelegFit& fit : model.peleg_fits()) {
@@ -84,7 +101,7 @@ plot for [i=1:words(temps)] 'absorption_data.csv' using ($1 == T(i) ? $4 : 1/0):
      for [i=1:words(temps)] 'absorption_curves.csv' using ($1 == T(i) ? log10(60*$2) : 1/0):(-log10($6)) with lines lc i notitle
 unset multiplot
 )");
-  write_text_atomically(folder / "run_info.txt",
+  write_file_atomically(folder / "run_info.txt",
                         run_info({{"figure", "11"},
                                   {"table", table.string()},
                                   {"damping_reference_temperature_c", cell(reference.temperature_c)},

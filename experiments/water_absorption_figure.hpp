@@ -11,6 +11,9 @@ struct WaterAbsorptionFigureSettings {
   std::filesystem::path table;  ///< absorption data; empty: the shipped table
 };
 
+/// Reads the table and fits the model; throws naming the file when either fails.
+void validate(const WaterAbsorptionFigureSettings& settings);
+
 /// Writes absorption_data.csv, absorption_curves.csv, peleg_fits.csv, damping_fits.csv,
 /// figure11.png (two panels) and run_info.txt into `folder`.
 void water_absorption_figure_command(const WaterAbsorptionFigureSettings& settings,

@@ -2,13 +2,14 @@
 #include "experiments/xpbd_stiffness_study.hpp"
 
 #include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <iostream>
+#include <stdexcept>
 
+#include "experiments/interrupt.hpp"
 #include "experiments/output.hpp"
 #include "xpbd/energy.hpp"
 #include "xpbd/solver.hpp"
@@ -53,6 +54,7 @@ StiffnessRun run_one(const StiffnessStudySettings& s, const std::string& method,
   StiffnessRun run{method, iterations, 0.0, 0, false, 0.0};
   int frames_at_rest = 0;
   while (run.frames < s.max_frames && !run.reached_rest) {
+    stop_point();
     solver.step();
     ++run.frames;
     frames_at_rest = max_speed(c.model.particles) < s.rest_speed ? frames_at_rest + 1 : 0;
@@ -73,7 +75,7 @@ std::vector<StiffnessRun> run_stiffness_study(const StiffnessStudySettings& sett
   std::vector<StiffnessRun> runs(count);
   Progress progress("xpbd-stiffness", count);
   std::atomic<int> done = 0;
-  tbb::parallel_for(0, count, [&](int r) {
+  for_each_item(count, [&](int r) {
     runs[r] = run_one(settings, kMethods[r / per_method], settings.iterations[r % per_method]);
     progress.update(++done);
   });
@@ -92,7 +94,17 @@ double relative_spread(const std::vector<StiffnessRun>& runs, const std::string&
   return (*hi - *lo) / mean;
 }
 
+void validate(const StiffnessStudySettings& s) {
+  if (s.iterations.empty() || *std::min_element(s.iterations.begin(), s.iterations.end()) < 1)
+    throw std::invalid_argument("xpbd-stiffness: --iterations needs counts >= 1");
+  if (s.substeps < 1) throw std::invalid_argument("xpbd-stiffness: --substeps must be >= 1");
+  if (!(s.young > 0.0)) throw std::invalid_argument("xpbd-stiffness: --young must be positive");
+  if (!(s.pbd_stiffness > 0.0 && s.pbd_stiffness <= 1.0))
+    throw std::invalid_argument("xpbd-stiffness: --pbd-stiffness must be in (0, 1]");
+}
+
 void stiffness_study_command(const StiffnessStudySettings& settings, const std::filesystem::path& folder) {
+  validate(settings);
   make_output_folder(folder);
   const auto start = std::chrono::steady_clock::now();
   const std::vector<StiffnessRun> runs = run_stiffness_study(settings);
@@ -107,7 +119,7 @@ void stiffness_study_command(const StiffnessStudySettings& settings, const std::
     std::printf("%-18s %10d %18.6e %8d %8.2f%s\n", r.method.c_str(), r.iterations, r.tip_deflection,
                 r.frames, r.wall_seconds, r.reached_rest ? "" : "  (not at rest)");
   }
-  write_text_atomically(folder / "stiffness.csv", table.text());
+  write_file_atomically(folder / "stiffness.csv", table.text());
 
   render_plot(folder, "stiffness", R"(set terminal pngcairo size 900,600
 set output 'stiffness.png'
@@ -121,7 +133,7 @@ plot for [m in "xpbd-neo-hookean xpbd-springs pbd-springs"] 'stiffness.csv' \
      using 2:(strcol(1) eq m ? 1000*$5 : 1/0) with linespoints title m
 )");
   const double total = seconds_since(start);
-  write_text_atomically(
+  write_file_atomically(
       folder / "run_info.txt",
       run_info({{"study", "xpbd-stiffness"},
                 {"cantilever", cell(settings.length) + " m x " + cell(settings.width) + " m x " +

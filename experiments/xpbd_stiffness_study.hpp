@@ -43,6 +43,9 @@ double relative_spread(const std::vector<StiffnessRun>& runs, const std::string&
 
 /// Runs the study and writes stiffness.csv, stiffness.png and run_info.txt to `folder`;
 /// prints the table and the spreads on stdout.
+/// Throws std::invalid_argument naming the setting that is out of range.
+void validate(const StiffnessStudySettings& settings);
+
 void stiffness_study_command(const StiffnessStudySettings& settings, const std::filesystem::path& folder);
 
 }  // namespace rice::experiments

@@ -34,8 +34,12 @@ TEST(GrainSimulation, GrainFallsAndRestsOnTheGroundWithItsRenderMeshAttached) {
   model.ground->static_friction = 0.5;
   model.ground->dynamic_friction = 0.4;
 
+  // h = 1/7200 s: under the time a pressure wave takes to cross a 1 mm edge (1.9e-4 s, the
+  // Neo-Hookean pair's stability limit, README "Known limits"). At 40 substeps (h = 4.2e-4 s)
+  // the grain gained kinetic energy and inverted a tet in the clang build; at 60 it still
+  // gained 6% while spinning.
   xpbd::SolverSettings settings;
-  settings.substeps = 40;
+  settings.substeps = 120;
   settings.iterations = 5;
   xpbd::Solver solver(model, settings);
   // The landing can leave the grain spinning about a vertical axis through its contact
@@ -48,7 +52,9 @@ TEST(GrainSimulation, GrainFallsAndRestsOnTheGroundWithItsRenderMeshAttached) {
     solver.step();
     if (frame == 10) landed_energy = kinetic_energy();
   }
-  EXPECT_LE(kinetic_energy(), 1.001 * landed_energy);
+  // Energy below a millionth of the drop's counts as rest: noise there is not a gain.
+  const double rest_energy = 1e-6 * mass * 9.81 * drop;
+  EXPECT_LE(kinetic_energy(), 1.001 * landed_energy + rest_energy);
   const double vertical_momentum = masses.dot(model.particles.v.col(2));
   EXPECT_LT(std::abs(vertical_momentum) / mass, 5e-3);  // landed: impact speed was 0.2 m/s
   const Eigen::VectorXd volumes = xpbd::tet_volumes(model.particles.x, mesh.T);

@@ -1,0 +1,317 @@
+// The `rice` command line (see command_line.hpp). Each subcommand is a thin wrapper over a
+// driver in this folder; the ranges below are what a run accepts, checked while parsing.
+#include "experiments/command_line.hpp"
+
+#include <CLI/CLI.hpp>
+#include <tbb/global_control.h>
+
+#include <charconv>
+#include <cstdint>
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "experiments/convergence_study.hpp"
+#include "experiments/grain_figures.hpp"
+#include "experiments/grain_library.hpp"
+#include "experiments/interrupt.hpp"
+#include "experiments/oscillator_study.hpp"
+#include "experiments/water_absorption_figure.hpp"
+#include "experiments/xpbd_stiffness_study.hpp"
+#include "grains/mesh_io.hpp"
+#include "grains/water_content.hpp"
+
+namespace rice::experiments {
+namespace {
+
+std::string number_text(double value) {
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+  return std::string(buffer, end);
+}
+
+// Which ends of a range are open.
+enum class Ends { kClosed, kOpenLow, kOpenHigh };
+
+// A number option: finite and in [low, high] (or with the ends `ends` opens). CLI11
+// prefixes the message with the option's name.
+CLI::Validator number_in(double low, double high, Ends ends = Ends::kClosed) {
+  const std::string range = std::string(ends == Ends::kOpenLow ? "(" : "[") + number_text(low) + ", " +
+                            number_text(high) + (ends == Ends::kOpenHigh ? ")" : "]");
+  return CLI::Validator(
+      [=](std::string& input) -> std::string {
+        double value = 0.0;
+        try {
+          size_t used = 0;
+          value = std::stod(input, &used);
+          if (used != input.size()) return "'" + input + "' is not a number";
+        } catch (const std::exception&) {
+          return "'" + input + "' is not a number in " + range;
+        }
+        const bool above = ends == Ends::kOpenLow ? value > low : value >= low;
+        const bool below = ends == Ends::kOpenHigh ? value < high : value <= high;
+        if (!std::isfinite(value) || !above || !below) return input + " is outside " + range;
+        return {};
+      },
+      "in " + range);
+}
+
+// A seed: an integer in [0, 2^64 - 1] (CLI11 alone wraps -1 around).
+CLI::Validator seed_value() {
+  return CLI::Validator(
+      [](std::string& input) -> std::string {
+        std::uint64_t value = 0;
+        const auto [end, error] = std::from_chars(input.data(), input.data() + input.size(), value);
+        if (error != std::errc{} || end != input.data() + input.size())
+          return "'" + input + "' is not a seed (an integer in [0, 2^64 - 1])";
+        return {};
+      },
+      "in [0, 2^64 - 1]");
+}
+
+}  // namespace
+
+struct CommandLine::Commands {
+  CLI::App app{"rice: a testbed for simulating and rendering freshly cooked rice"};
+  int threads = 0;
+
+  CLI::App* stiffness_cmd = nullptr;
+  StiffnessStudySettings stiffness;
+  std::string stiffness_out = "out/xpbd-stiffness";
+
+  CLI::App* oscillator_cmd = nullptr;
+  OscillatorSettings oscillator;
+  std::string oscillator_out = "out/oscillator";
+
+  CLI::App* convergence_cmd = nullptr;
+  ConvergenceSettings convergence;
+  std::string convergence_out = "out/convergence";
+  bool convergence_quick = false;
+  CLI::Option *duration_opt = nullptr, *young_opt = nullptr, *tau_opt = nullptr;
+
+  CLI::App* grains_cmd = nullptr;
+  GrainLibrarySettings library;
+  std::string library_out = "out/grains", cultivar_name = "japonica", base_mesh_path;
+  bool no_sections = false;
+  // Edits of the chosen cultivar, applied after it is looked up by name.
+  std::vector<std::pair<CLI::Option*, std::function<double&(grains::Cultivar&)>>> cultivar_edits;
+
+  CLI::App *figure8_cmd = nullptr, *figure9_cmd = nullptr, *figure11_cmd = nullptr;
+  WaterAbsorptionFigureSettings absorption;
+  std::string absorption_out = "out/figure11", figure8_out = "out/figure8", figure9_out = "out/figure9";
+  std::uint64_t figure_seed = 1;
+  int figure9_count = 20;
+
+  Commands() {
+    app.require_subcommand(1);
+    app.add_option("--threads", threads, "worker threads (0: all cores)")->check(number_in(0, 1024));
+    add_studies();
+    add_grains();
+    add_figures();
+  }
+
+  void add_studies() {
+    CLI::App* study = app.add_subcommand("study", "convergence, stiffness and validation studies");
+    study->require_subcommand(1);
+
+    stiffness_cmd = study->add_subcommand("xpbd-stiffness",
+                                          "cantilever rest deflection vs iteration count, XPBD against PBD");
+    stiffness_cmd->add_option("--out", stiffness_out, "output folder")->capture_default_str();
+    stiffness_cmd->add_option("--iterations", stiffness.iterations, "iteration counts")
+        ->check(number_in(1, 1000))->capture_default_str();
+    stiffness_cmd->add_option("--substeps", stiffness.substeps, "substeps per 1/60 s frame")
+        ->check(number_in(1, 10000))->capture_default_str();
+    stiffness_cmd->add_option("--young", stiffness.young, "Young's modulus [Pa]")
+        ->check(number_in(1, 1e12))->capture_default_str();
+    stiffness_cmd->add_option("--pbd-stiffness", stiffness.pbd_stiffness, "PBD stiffness k")
+        ->check(number_in(0, 1, Ends::kOpenLow))->capture_default_str();
+
+    oscillator_cmd = study->add_subcommand("oscillator",
+                                           "spring-mass period and decay vs analytic, over substeps per frame");
+    oscillator_cmd->add_option("--out", oscillator_out, "output folder")->capture_default_str();
+    oscillator_cmd->add_option("--damping", oscillator.damping, "beta [N s/m], below critical (2 sqrt(k m) = 20)")
+        ->check(number_in(0, 1e6))->capture_default_str();
+    oscillator_cmd->add_option("--substeps", oscillator.substeps, "substeps per frame to sweep")
+        ->check(number_in(1, 10000))->capture_default_str();
+
+    convergence_cmd = study->add_subcommand(
+        "convergence", "XPBD error against the reference solver over substeps, iterations, resolution");
+    convergence_cmd->add_option("--out", convergence_out, "output folder")->capture_default_str();
+    convergence_cmd->add_flag("--quick", convergence_quick, "reduced grid for CI (under a minute)");
+    duration_opt = convergence_cmd->add_option("--duration", convergence.duration, "simulated time [s], >= 1/60")
+                       ->check(number_in(1.0 / 60.0, 60))->capture_default_str();
+    young_opt = convergence_cmd->add_option("--young", convergence.bar.young, "Young's modulus [Pa]")
+                    ->check(number_in(1, 1e12))->capture_default_str();
+    tau_opt = convergence_cmd->add_option("--rayleigh-time", convergence.rayleigh_time, "tau of the damped runs [s]")
+                  ->check(number_in(0, 10, Ends::kOpenLow))->capture_default_str();
+  }
+
+  void add_grains() {
+    grains::PorosityParameters& porosity = library.recipe.porosity;
+    grains_cmd = app.add_subcommand("grains", "procedural grains: render and simulation meshes, embedding");
+    grains_cmd->add_option("--out", library_out, "output folder")->capture_default_str();
+    grains_cmd->add_option("--cultivar", cultivar_name, "japonica, indica, aromatic or glutinous")
+        ->capture_default_str();
+    grains_cmd->add_option("--count", library.count, "number of grains")
+        ->check(number_in(1, 1e6))->capture_default_str();
+    grains_cmd->add_option("--variants", library.variants, "0: generate every grain; K: K variants, instanced")
+        ->check(number_in(0, 1e5))->capture_default_str();
+    grains_cmd->add_option("--seed", library.seed, "random seed")->check(seed_value())->capture_default_str();
+    grains_cmd->add_option("--base-mesh", base_mesh_path, "closed manifold OBJ/OFF/PLY [m] replacing the base shape")
+        ->check(CLI::ExistingFile);
+    const auto cultivar_option = [&](const std::string& name, const std::string& help, CLI::Validator range,
+                                     std::function<double&(grains::Cultivar&)> field) {
+      CLI::Option* option =
+          grains_cmd->add_option(name)->type_name("FLOAT")->description(help + " (cultivar default)")->check(range);
+      cultivar_edits.emplace_back(option, std::move(field));
+    };
+    using grains::Cultivar;
+    cultivar_option("--length", "mean raw length [m]", number_in(1e-3, 30e-3),
+                    [](Cultivar& c) -> double& { return c.length.mean; });
+    cultivar_option("--width", "mean raw width [m]", number_in(0.5e-3, 10e-3),
+                    [](Cultivar& c) -> double& { return c.width.mean; });
+    cultivar_option("--thickness", "mean raw thickness [m]", number_in(0.5e-3, 10e-3),
+                    [](Cultivar& c) -> double& { return c.thickness.mean; });
+    cultivar_option("--cooked-length-ratio", "cooked/raw length", number_in(0.5, 3),
+                    [](Cultivar& c) -> double& { return c.cooked_length_ratio; });
+    cultivar_option("--cooked-width-ratio", "cooked/raw width", number_in(0.5, 3),
+                    [](Cultivar& c) -> double& { return c.cooked_width_ratio; });
+    cultivar_option("--cooked-thickness-ratio", "cooked/raw thickness", number_in(0.5, 3),
+                    [](Cultivar& c) -> double& { return c.cooked_thickness_ratio; });
+    cultivar_option("--tip-exponent", "tip profile exponent p (2 ellipsoidal, larger blunter)", number_in(1, 8),
+                    [](Cultivar& c) -> double& { return c.tip_exponent; });
+    cultivar_option("--asymmetry", "dorsal/ventral width asymmetry", number_in(0, 0.5, Ends::kOpenHigh),
+                    [](Cultivar& c) -> double& { return c.asymmetry; });
+    cultivar_option("--notch-depth", "embryo notch depth / thickness", number_in(0, 0.5, Ends::kOpenHigh),
+                    [](Cultivar& c) -> double& { return c.notch_depth; });
+    cultivar_option("--notch-size", "embryo notch radius / length", number_in(0, 0.5, Ends::kOpenHigh),
+                    [](Cultivar& c) -> double& { return c.notch_size; });
+    cultivar_option("--swell-min", "smallest P of eq. 2", number_in(1, 1.5),
+                    [](Cultivar& c) -> double& { return c.swell_min; });
+    cultivar_option("--swell-max", "largest P of eq. 2", number_in(1, 1.5),
+                    [](Cultivar& c) -> double& { return c.swell_max; });
+    grains_cmd->add_option("--density", library.recipe.density, "grain material density [kg/m^3]")
+        ->check(number_in(100, 1e4))->capture_default_str();
+    grains_cmd->add_option("--porosity", porosity.core_porosity, "void fraction of the core")
+        ->check(number_in(0, 0.9))->capture_default_str();
+    grains_cmd->add_option("--pores", porosity.pore_count, "pore count (-1: from --porosity)")
+        ->check(number_in(-1, 1e5))->capture_default_str();
+    // Radii and voxels under 20 µm and 5 µm would make level sets of billions of voxels.
+    grains_cmd->add_option("--pore-radius-min", porosity.pore_radius_min, "[m]")
+        ->check(number_in(20e-6, 1e-3))->capture_default_str();
+    grains_cmd->add_option("--pore-radius-max", porosity.pore_radius_max, "[m]")
+        ->check(number_in(20e-6, 1e-3))->capture_default_str();
+    grains_cmd->add_option("--bumps", porosity.bump_count, "spheres on the surface")
+        ->check(number_in(0, 1e5))->capture_default_str();
+    grains_cmd->add_option("--bump-radius-min", porosity.bump_radius_min, "[m]")
+        ->check(number_in(20e-6, 1e-3))->capture_default_str();
+    grains_cmd->add_option("--bump-radius-max", porosity.bump_radius_max, "[m]")
+        ->check(number_in(20e-6, 1e-3))->capture_default_str();
+    grains_cmd->add_option("--skin", porosity.skin_thickness, "pore-free skin [m]")
+        ->check(number_in(0, 1e-3))->capture_default_str();
+    grains_cmd->add_option("--voxel-size", porosity.voxel_size, "[m] (0: smallest radius / 1.5; else >= 5e-6)")
+        ->check(number_in(0, 1e-3))->capture_default_str();
+    grains_cmd->add_option("--adaptivity", library.recipe.mesh_adaptivity, "render mesh adaptivity")
+        ->check(number_in(0, 1))->capture_default_str();
+    grains_cmd->add_option("--min-vertices", library.recipe.simulation.min_vertices, "simulation mesh size range")
+        ->check(number_in(4, 1e4))->capture_default_str();
+    grains_cmd->add_option("--max-vertices", library.recipe.simulation.max_vertices, "simulation mesh size range")
+        ->check(number_in(4, 1e4))->capture_default_str();
+    grains_cmd->add_flag("--no-sections", no_sections, "skip the cross-section PNGs");
+  }
+
+  void add_figures() {
+    CLI::App* figure = app.add_subcommand("figure", "regenerate a figure of the paper");
+    figure->require_subcommand(1);
+    figure11_cmd = figure->add_subcommand("11", "water absorption vs soaking time and the damping law of eq. 4");
+    figure11_cmd->add_option("--out", absorption_out, "output folder")->capture_default_str();
+    figure11_cmd->add_option("--table", absorption.table,
+                             "absorption CSV (temperature_c,soak_minutes,absorption_percent); default: shipped table")
+        ->check(CLI::ExistingFile);
+
+    figure8_cmd = figure->add_subcommand("8", "japonica grains of different sizes (P from 1 to 1.5)");
+    figure8_cmd->add_option("--out", figure8_out, "output folder")->capture_default_str();
+    figure8_cmd->add_option("--seed", figure_seed, "random seed")->check(seed_value())->capture_default_str();
+    figure9_cmd =
+        figure->add_subcommand("9", "indica, japonica, aromatic side by side; dimensions against the literature");
+    figure9_cmd->add_option("--out", figure9_out, "output folder")->capture_default_str();
+    figure9_cmd->add_option("--seed", figure_seed, "random seed")->check(seed_value())->capture_default_str();
+    figure9_cmd->add_option("--count", figure9_count, "grains per cultivar for the dimension statistics")
+        ->check(number_in(2, 1000))->capture_default_str();
+  }
+
+  ConvergenceSettings convergence_settings() const {
+    ConvergenceSettings settings = convergence_quick ? ConvergenceSettings::quick() : ConvergenceSettings{};
+    if (duration_opt->count()) settings.duration = convergence.duration;
+    if (young_opt->count()) settings.bar.young = convergence.bar.young;
+    if (tau_opt->count()) settings.rayleigh_time = convergence.rayleigh_time;
+    return settings;
+  }
+
+  // The cultivar named, then the user's edits of it, then the base mesh read.
+  GrainLibrarySettings grain_library_settings() const {
+    GrainLibrarySettings settings = library;
+    settings.recipe.cultivar = grains::cultivar_by_name(cultivar_name);
+    for (const auto& [option, field] : cultivar_edits)
+      if (option->count()) field(settings.recipe.cultivar) = option->as<double>();
+    if (!base_mesh_path.empty()) settings.recipe.base_mesh = grains::read_surface_mesh(base_mesh_path);
+    settings.sections = !no_sections;
+    return settings;
+  }
+};
+
+CommandLine::CommandLine() : commands_(std::make_unique<Commands>()) {}
+CommandLine::~CommandLine() = default;
+
+CLI::App& CommandLine::app() { return commands_->app; }
+
+int CommandLine::threads() const { return commands_->threads; }
+
+void CommandLine::validate() const {
+  const Commands& c = *commands_;
+  if (*c.stiffness_cmd) experiments::validate(c.stiffness);
+  if (*c.oscillator_cmd) experiments::validate(c.oscillator);
+  if (*c.convergence_cmd) experiments::validate(c.convergence_settings());
+  if (*c.grains_cmd) experiments::validate(c.grain_library_settings());
+  if (*c.figure11_cmd) experiments::validate(c.absorption);
+}
+
+void CommandLine::run() const {
+  const Commands& c = *commands_;
+  if (*c.stiffness_cmd) stiffness_study_command(c.stiffness, c.stiffness_out);
+  if (*c.oscillator_cmd) oscillator_study_command(c.oscillator, c.oscillator_out);
+  if (*c.convergence_cmd) convergence_study_command(c.convergence_settings(), c.convergence_out);
+  if (*c.grains_cmd) grain_library_command(c.grain_library_settings(), c.library_out);
+  if (*c.figure8_cmd) grain_sizes_figure_command(c.figure_seed, c.figure8_out);
+  if (*c.figure9_cmd) cultivars_figure_command(c.figure_seed, c.figure9_count, c.figure9_out);
+  if (*c.figure11_cmd) water_absorption_figure_command(c.absorption, c.absorption_out);
+}
+
+int run_command_line(int argc, char** argv) {
+  install_interrupt_handlers();
+  CommandLine command_line;
+  CLI::App& app = command_line.app();
+  try {
+    app.parse(argc, argv);
+    std::unique_ptr<tbb::global_control> limit;
+    if (command_line.threads() > 0)
+      limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                    command_line.threads());
+    command_line.validate();
+    command_line.run();
+  } catch (const CLI::Error& e) {
+    return app.exit(e);
+  } catch (const Interrupted& e) {
+    std::cerr << "rice: " << e.what() << " during " << activity() << "; the files written so far are complete\n";
+    return 128 + e.signal();
+  } catch (const std::exception& e) {
+    std::cerr << "rice: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace rice::experiments

@@ -1,0 +1,51 @@
+// Signal flag and stop points (see interrupt.hpp).
+#include "experiments/interrupt.hpp"
+
+#include <csignal>
+#include <cstring>
+#include <mutex>
+
+namespace rice::experiments {
+namespace {
+
+volatile std::sig_atomic_t g_signal = 0;
+
+extern "C" void on_signal(int signal) { g_signal = signal; }
+
+std::mutex g_activity_mutex;
+std::string g_activity;
+
+}  // namespace
+
+Interrupted::Interrupted(int signal)
+    : std::runtime_error(std::string("interrupted by ") + (signal == SIGINT ? "SIGINT" : "SIGTERM")),
+      signal_(signal) {}
+
+void install_interrupt_handlers() {
+  struct sigaction action {};
+  action.sa_handler = on_signal;
+  sigemptyset(&action.sa_mask);
+  // Restart interrupted system calls (the run stops at its next stop point, not inside a
+  // write), and restore the default so that a second signal ends the process at once.
+  action.sa_flags = SA_RESTART | SA_RESETHAND;
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+bool stop_requested() { return g_signal != 0; }
+
+void stop_point() {
+  if (const int signal = g_signal) throw Interrupted(signal);
+}
+
+void set_activity(std::string activity) {
+  const std::lock_guard lock(g_activity_mutex);
+  g_activity = std::move(activity);
+}
+
+std::string activity() {
+  const std::lock_guard lock(g_activity_mutex);
+  return g_activity;
+}
+
+}  // namespace rice::experiments
