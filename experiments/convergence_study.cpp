@@ -10,6 +10,7 @@
 #include <map>
 #include <tuple>
 
+#include "experiments/gnuplot.hpp"
 #include "experiments/interrupt.hpp"
 #include "experiments/output.hpp"
 #include "fem_reference/implicit_solver.hpp"
@@ -308,7 +309,8 @@ set datafile separator ','
 set datafile missing 'nan'
 set multiplot layout 2,2
 set logscale xy
-set format y '%.0e'
+set format x '10^{%L}'
+set format y '10^{%L}'
 set xlabel 'wall time per simulated second [s]'
 set ylabel 'RMS vertex error / length'
 set cblabel 'log2 substeps per frame'
@@ -332,6 +334,8 @@ set datafile separator ','
 set datafile missing 'nan'
 set multiplot layout 1,2
 set logscale xy
+set format x '10^{%L}'
+set format y '10^{%L}'
 set xlabel 'wall time per simulated second [s]'
 set ylabel 'RMS vertex error / length (vs reference at that resolution)'
 set key bottom left

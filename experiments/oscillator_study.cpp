@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "experiments/gnuplot.hpp"
 #include "experiments/interrupt.hpp"
 #include "experiments/output.hpp"
 #include "fem_reference/implicit_solver.hpp"
@@ -124,18 +125,20 @@ set output 'oscillator.png'
 set datafile separator ','
 set multiplot layout 1,2
 set logscale xy
+set format x '10^{%L}'
+set format y '10^{%L}'
 set xlabel 'wall time per simulated second [s]'
 set key bottom left
 set ylabel 'decay-rate error [1/s]'
 xpbd(b) = (strcol(1) eq 'xpbd' && (b ? $2 > 0 : $2 == 0))
 reference(b) = (strcol(1) eq 'reference' && (b ? $2 > 0 : $2 == 0))
-set title 'Spring-mass: decay vs analytic (substeps 1..128 per frame)'
+set title 'Decay-rate error falls as h: XPBD is backward Euler, at a fraction of the reference cost' font ',10'
 plot 'oscillator.csv' using (xpbd(0) ? $11 : 1/0):10 with linespoints title 'XPBD, beta = 0', \
      '' using (xpbd(1) ? $11 : 1/0):10 with linespoints title 'XPBD, beta > 0', \
      '' using (reference(0) ? $11 : 1/0):10 with points pt 6 ps 1.5 title 'reference, beta = 0', \
      '' using (reference(1) ? $11 : 1/0):10 with points pt 6 ps 1.5 title 'reference, beta > 0'
 set ylabel 'relative period error'
-set title 'Period vs analytic'
+set title 'Period error falls as h^2 without damping, on both solvers (substeps 1..128 per frame)' font ',10'
 plot 'oscillator.csv' using (xpbd(0) ? $11 : 1/0):7 with linespoints title 'XPBD, beta = 0', \
      '' using (xpbd(1) ? $11 : 1/0):7 with linespoints title 'XPBD, beta > 0', \
      '' using (reference(0) ? $11 : 1/0):7 with points pt 6 ps 1.5 title 'reference, beta = 0', \

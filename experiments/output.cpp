@@ -12,8 +12,6 @@
 #include <charconv>
 #include <cstring>
 #include <cstdio>
-#include <cstdlib>
-#include <iostream>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -107,26 +105,6 @@ std::string cell(double value) {
 }
 
 std::string cell(long value) { return std::to_string(value); }
-
-bool render_plot(const std::filesystem::path& folder, const std::string& name,
-                 const std::string& gnuplot_script) {
-  const std::filesystem::path script = folder / (name + ".gp");
-  write_file_atomically(script, gnuplot_script);
-  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) {
-    std::cerr << "note: gnuplot is not installed; run 'gnuplot " << script.string()
-              << "' later to make the plot\n";
-    return false;
-  }
-  const std::string command =
-      "cd '" + folder.string() + "' && gnuplot '" + name + ".gp' 2>'" + name + ".gnuplot.log'";
-  if (std::system(command.c_str()) != 0) {
-    std::cerr << "warning: gnuplot failed on " << script.string() << " (see " << name
-              << ".gnuplot.log)\n";
-    return false;
-  }
-  std::filesystem::remove(folder / (name + ".gnuplot.log"));
-  return true;
-}
 
 Progress::Progress(std::string label, int total)
     : label_(std::move(label)), total_(total), enabled_(isatty(fileno(stderr)) != 0),

@@ -1,7 +1,7 @@
 // What every study and figure driver writes: an output folder, files written atomically (so
 // a run that fails, is interrupted or is killed leaves complete files or none), CSV tables
-// with a header row, gnuplot scripts rendered to PNG next to their CSV, a run-info file, and
-// progress lines on a terminal (quiet when stderr is not a terminal, as in CI).
+// with a header row, a run-info file, and progress lines on a terminal (quiet when stderr is
+// not a terminal, as in CI). Plots: gnuplot.hpp.
 #pragma once
 
 #include <chrono>
@@ -45,12 +45,6 @@ class CsvTable {
 std::string cell(double value);
 std::string cell(long value);
 inline std::string cell(int value) { return cell(static_cast<long>(value)); }
-
-/// Writes `<folder>/<name>.gp` and runs gnuplot on it to make `<folder>/<name>.png`.
-/// Returns false (with a message on stderr) when gnuplot is not installed or fails; the CSV
-/// and the script stay, so the plot can be made later.
-bool render_plot(const std::filesystem::path& folder, const std::string& name,
-                 const std::string& gnuplot_script);
 
 /// Progress of a long loop: lines "label k/N, ETA" on stderr when stderr is a terminal, and
 /// the activity reported if the run is interrupted (interrupt.hpp). Thread-safe.

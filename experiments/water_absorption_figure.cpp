@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "experiments/gnuplot.hpp"
 #include "experiments/output.hpp"
 #include "grains/water_content.hpp"
 

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "experiments/gnuplot.hpp"
 #include "experiments/interrupt.hpp"
 #include "experiments/output.hpp"
 #include "xpbd/energy.hpp"
@@ -125,6 +126,7 @@ void stiffness_study_command(const StiffnessStudySettings& settings, const std::
 set output 'stiffness.png'
 set datafile separator ','
 set logscale xy
+set format y '10^{%L}'
 set xlabel 'iterations per substep K'
 set ylabel 'rest tip deflection [mm] (log)'
 set title 'Cantilever under gravity: XPBD stiffness does not depend on K, PBD stiffness does'

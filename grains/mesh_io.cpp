@@ -30,14 +30,17 @@ namespace {
   throw std::runtime_error(where + ": " + what);
 }
 
-// Bytes from the stream's position to its end; the position is kept. Unknown (a pipe): no cap.
-long long bytes_left(std::istream& in) {
+// Bytes from the stream's position to its end; the position is kept. A stream at its end
+// (a header line that ran to the end of the file) has none left; one whose size cannot be
+// told (a pipe) is refused, as its declared counts could not be capped.
+long long bytes_left(std::istream& in, const std::string& name) {
+  if (in.eof()) return 0;
   const std::streampos here = in.tellg();
-  if (here < 0) return std::numeric_limits<long long>::max();
   in.seekg(0, std::ios::end);
   const std::streampos end = in.tellg();
   in.seekg(here);
-  return end < 0 ? std::numeric_limits<long long>::max() : static_cast<long long>(end - here);
+  if (here < 0 || end < 0 || !in) fail(name, "cannot tell the size of the input (not a file?)");
+  return static_cast<long long>(end - here);
 }
 
 // A declared count must be non-negative and fit in the bytes left at `min_item_bytes` an item.
@@ -148,7 +151,7 @@ bool next_off_line(std::istream& in, std::string& line, long& number) {
 }
 
 SurfaceMesh read_off(std::istream& in, const std::string& name) {
-  const long long size = bytes_left(in);
+  const long long size = bytes_left(in, name);
   long number = 0;
   std::string line, header;
   if (!next_off_line(in, line, number)) fail(name, "missing OFF header");
@@ -273,7 +276,7 @@ SurfaceMesh read_ply(std::istream& in, const std::string& name) {
   const bool ascii = format == "ascii";
   if (!ascii && format != "binary_little_endian")
     fail(name, "PLY format '" + format + "' is not supported (ascii or binary_little_endian)");
-  long long size = bytes_left(in);
+  long long size = bytes_left(in, name);
   for (const PlyElement& element : elements) {
     const long long item_bytes = min_item_bytes(element, ascii);
     check_count(name, "element '" + element.name + "'", element.count, size, item_bytes);
@@ -290,12 +293,13 @@ SurfaceMesh read_ply(std::istream& in, const std::string& name) {
     };
     if (is_vertex && !(has_scalar("x") && has_scalar("y") && has_scalar("z")))
       fail(name, "the vertex element needs scalar properties x, y and z");
+    std::istringstream words;
     for (long long item = 0; item < element.count; ++item) {
       const std::string where = "element '" + element.name + "' " + std::to_string(item);
-      std::istringstream words;
       if (ascii) {
         if (!std::getline(in, line)) fail(name, "file ends before " + where);
-        words = std::istringstream(line);
+        words.clear();
+        words.str(line);
       }
       const auto scalar = [&](const std::string& type) {
         double value = 0.0;
@@ -308,7 +312,7 @@ SurfaceMesh read_ply(std::istream& in, const std::string& name) {
       for (const PlyProperty& property : element.properties) {
         if (!property.count_type.empty()) {
           const long long n = list_length(scalar(property.count_type), name, where);
-          check_count(name, where + " list", n, ascii ? static_cast<long long>(line.size()) : bytes_left(in),
+          check_count(name, where + " list", n, ascii ? static_cast<long long>(line.size()) : bytes_left(in, name),
                       ascii ? 2 : ply_type_size(property.type));
           const bool indices = is_face && (property.name == "vertex_indices" || property.name == "vertex_index");
           for (long long k = 0; k < n; ++k) {
@@ -387,7 +391,7 @@ void write_medit(std::ostream& out, const VolumeMesh& mesh) {
 }
 
 VolumeMesh read_medit(std::istream& in, const std::string& name) {
-  const long long size = bytes_left(in);
+  const long long size = bytes_left(in, name);
   VolumeMesh mesh;
   bool have_vertices = false, have_tets = false;
   for (std::string word; in >> word && word != "End";) {

@@ -1,0 +1,18 @@
+// Plots: a gnuplot script saved next to the CSV it plots, and its PNG, made by running
+// gnuplot with the PNG on a pipe and writing it atomically like every other output (so a
+// killed run never leaves half a PNG).
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace rice::experiments {
+
+/// Writes `<folder>/<name>.gp` (which must contain `set output '<name>.png'`, so that it can
+/// be rerun by hand) and makes `<folder>/<name>.png` with gnuplot, run in `folder`. Returns
+/// false, with a message on stderr, when gnuplot is not installed or fails: the CSV and the
+/// script stay, so the plot can be made later. Throws std::logic_error if the script lacks
+/// its set output line.
+bool render_plot(const std::filesystem::path& folder, const std::string& name, const std::string& gnuplot_script);
+
+}  // namespace rice::experiments
