@@ -3,7 +3,6 @@
 #include "experiments/convergence_study.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -12,6 +11,7 @@
 
 #include "experiments/gnuplot.hpp"
 #include "experiments/interrupt.hpp"
+#include "experiments/item_loop.hpp"
 #include "experiments/output.hpp"
 #include "fem_reference/implicit_solver.hpp"
 #include "fem_reference/trajectory_error.hpp"
@@ -229,15 +229,8 @@ std::vector<ConvergenceRun> run_convergence_study(const ConvergenceSettings& s) 
   validate(s);
   const std::vector<Case> cases = reference_cases(s);
   std::vector<Reference> references(cases.size());
-  {
-    Progress progress("convergence: references", static_cast<int>(cases.size()));
-    std::atomic<int> done = 0;
-    for_each_item(static_cast<int>(cases.size()), [&](int i) {
-      references[i] = run_reference(s, cases[i]);
-      progress.update(++done);
-    });
-    progress.finish();
-  }
+  for_each_item("convergence: references", static_cast<int>(cases.size()),
+                [&](int i) { references[i] = run_reference(s, cases[i]); });
   struct Job {
     size_t reference;
     int iterations;
@@ -256,15 +249,9 @@ std::vector<ConvergenceRun> run_convergence_study(const ConvergenceSettings& s) 
     }
   }
   std::vector<ConvergenceRun> runs(jobs.size());
-  {
-    Progress progress("convergence: position-based runs", static_cast<int>(jobs.size()));
-    std::atomic<int> done = 0;
-    for_each_item(static_cast<int>(jobs.size()), [&](int j) {
-      runs[j] = run_position_based(s, references[jobs[j].reference], jobs[j].iterations, jobs[j].variant);
-      progress.update(++done);
-    });
-    progress.finish();
-  }
+  for_each_item("convergence: position-based runs", static_cast<int>(jobs.size()), [&](int j) {
+    runs[j] = run_position_based(s, references[jobs[j].reference], jobs[j].iterations, jobs[j].variant);
+  });
   for (const Reference& ref : references) {
     ConvergenceRun run = describe(ref.setting, "reference", ref.tets);
     run.wall_per_sim_second = ref.wall_per_sim_second;

@@ -2,12 +2,11 @@
 #include "experiments/grain_figures.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <iostream>
 
 #include "experiments/grain_library.hpp"
-#include "experiments/interrupt.hpp"
+#include "experiments/item_loop.hpp"
 #include "experiments/output.hpp"
 #include "grains/surface_measures.hpp"
 
@@ -55,14 +54,10 @@ void grain_sizes_figure_command(std::uint64_t seed, const std::filesystem::path&
   make_output_folder(folder);
   const auto seeds = child_seeds(seed, n);
   std::vector<grains::Grain> grains_built(n);
-  Progress progress("figure 8: grains", n);
-  std::atomic<int> done = 0;
-  for_each_item(n, [&](int i) {
+  for_each_item("figure 8: grains", n, [&](int i) {
     grains_built[i] = grains::make_grain(recipe, seeds[i], swells[i]);
     write_grain_files(grains_built[i], folder, "grain_" + std::to_string(i), false);
-    progress.update(++done);
   });
-  progress.finish();
   CsvTable table(grain_table_columns());
   std::vector<RgbImage> sections;
   for (int i = 0; i < n; ++i) {
@@ -93,15 +88,11 @@ void cultivars_figure_command(std::uint64_t seed, int count, const std::filesyst
     const auto grain_seeds = child_seeds(seeds[c], count);
     std::vector<grains::Vec3> extents(count);
     grains::Grain first;
-    Progress progress("figure 9: " + names[c], count);
-    std::atomic<int> done = 0;
-    for_each_item(count, [&](int i) {
+    for_each_item("figure 9: " + names[c], count, [&](int i) {
       grains::Grain grain = grains::make_grain(recipe, grain_seeds[i]);
       extents[i] = grains::bounding_box_extent(grain.render.V);
       if (i == 0) first = std::move(grain);
-      progress.update(++done);
     });
-    progress.finish();
     write_grain_files(first, folder, names[c], false);
     sections.push_back(cross_section_image(first, kSectionPixel));
 

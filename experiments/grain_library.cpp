@@ -2,12 +2,11 @@
 #include "experiments/grain_library.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 
-#include "experiments/interrupt.hpp"
+#include "experiments/item_loop.hpp"
 #include "experiments/output.hpp"
 #include "experiments/png_image.hpp"
 #include "grains/cross_section.hpp"
@@ -114,9 +113,7 @@ void grain_library_command(const GrainLibrarySettings& settings, const std::file
   std::vector<grains::Grain> variants(instanced ? generated : 0);
   std::vector<std::vector<std::string>> rows(instanced ? 0 : generated);
   std::vector<grains::GrainTimings> timings(generated);
-  Progress progress(instanced ? "variants" : "grains", generated);
-  std::atomic<int> done{0};
-  for_each_item(generated, [&](int i) {
+  for_each_item(instanced ? "variants" : "grains", generated, [&](int i) {
     grains::Grain grain =
         grains::make_grain(settings.recipe, seeds[i], instanced ? std::optional<double>(1.0) : std::nullopt);
     write_grain_files(grain, folder, numbered(instanced ? "variant" : "grain", i), settings.sections);
@@ -125,9 +122,7 @@ void grain_library_command(const GrainLibrarySettings& settings, const std::file
       variants[i] = std::move(grain);
     else
       rows[i] = grain_table_row(i, i, cultivar, grain, grain.shape.swell, Eigen::Quaterniond::Identity());
-    progress.update(++done);
   });
-  progress.finish();
   const double generation_seconds = seconds_since(start);
 
   const auto instancing_start = std::chrono::steady_clock::now();

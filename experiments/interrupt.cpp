@@ -1,16 +1,18 @@
 // Signal flag and stop points (see interrupt.hpp).
 #include "experiments/interrupt.hpp"
 
+#include <atomic>
 #include <csignal>
-#include <cstring>
 #include <mutex>
 
 namespace rice::experiments {
 namespace {
 
-volatile std::sig_atomic_t g_signal = 0;
+// Written by the handler, read by every worker thread: a lock-free atomic is safe for both.
+std::atomic<int> g_signal = 0;
+static_assert(std::atomic<int>::is_always_lock_free);
 
-extern "C" void on_signal(int signal) { g_signal = signal; }
+extern "C" void on_signal(int signal) { g_signal.store(signal, std::memory_order_relaxed); }
 
 std::mutex g_activity_mutex;
 std::string g_activity;
@@ -32,10 +34,10 @@ void install_interrupt_handlers() {
   sigaction(SIGTERM, &action, nullptr);
 }
 
-bool stop_requested() { return g_signal != 0; }
+bool stop_requested() { return g_signal.load(std::memory_order_relaxed) != 0; }
 
 void stop_point() {
-  if (const int signal = g_signal) throw Interrupted(signal);
+  if (const int signal = g_signal.load(std::memory_order_relaxed)) throw Interrupted(signal);
 }
 
 void set_activity(std::string activity) {

@@ -4,13 +4,13 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cstdio>
 #include <iostream>
 #include <stdexcept>
 
 #include "experiments/gnuplot.hpp"
 #include "experiments/interrupt.hpp"
+#include "experiments/item_loop.hpp"
 #include "experiments/output.hpp"
 #include "xpbd/energy.hpp"
 #include "xpbd/solver.hpp"
@@ -74,13 +74,9 @@ std::vector<StiffnessRun> run_stiffness_study(const StiffnessStudySettings& sett
   const int per_method = static_cast<int>(settings.iterations.size());
   const int count = static_cast<int>(kMethods.size()) * per_method;
   std::vector<StiffnessRun> runs(count);
-  Progress progress("xpbd-stiffness", count);
-  std::atomic<int> done = 0;
-  for_each_item(count, [&](int r) {
+  for_each_item("xpbd-stiffness", count, [&](int r) {
     runs[r] = run_one(settings, kMethods[r / per_method], settings.iterations[r % per_method]);
-    progress.update(++done);
   });
-  progress.finish();
   return runs;
 }
 
