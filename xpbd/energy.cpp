@@ -24,11 +24,24 @@ double kinetic_energy(const Particles& particles) {
   return energy;
 }
 
+double kinetic_energy(const Model& model) {
+  double energy = kinetic_energy(model.particles);
+  for (const RigidBody& b : model.rigid_bodies) {
+    if (b.inverse_mass == 0.0) continue;
+    const Vec3 omega_body = b.q.conjugate() * b.omega;
+    energy += 0.5 * b.v.squaredNorm() / b.inverse_mass +
+              0.5 * omega_body.dot(omega_body.cwiseQuotient(b.inverse_inertia));
+  }
+  return energy;
+}
+
 double gravitational_energy(const Model& model) {
   const Particles& p = model.particles;
   double energy = 0.0;
   for (int i = 0; i < p.size(); ++i)
     if (p.w[i] > 0.0) energy -= p.x.row(i).dot(model.gravity.transpose()) / p.w[i];
+  for (const RigidBody& b : model.rigid_bodies)
+    if (b.inverse_mass > 0.0) energy -= b.x.dot(model.gravity) / b.inverse_mass;
   return energy;
 }
 

@@ -10,7 +10,10 @@ namespace rice::xpbd {
 /// Σ ½ m |v|² over free particles (pinned particles carry no kinetic energy).
 double kinetic_energy(const Particles& particles);
 
-/// −Σ m g·x over free particles (zero at the origin).
+/// The particles' kinetic energy plus ½ m|v|² + ½ ωᵀIω of every movable rigid body.
+double kinetic_energy(const Model& model);
+
+/// −Σ m g·x over free particles and movable rigid bodies (zero at the origin).
 double gravitational_energy(const Model& model);
 
 /// Σ ½ C²/α over compliant constraints (α > 0); rigid constraints (α = 0) store none.

@@ -8,6 +8,9 @@
 #include <optional>
 #include <vector>
 
+#include "xpbd/body.hpp"
+#include "xpbd/collider.hpp"
+#include "xpbd/rigid_body.hpp"
 #include "xpbd/tet_mesh.hpp"
 #include "xpbd/types.hpp"
 
@@ -67,8 +70,22 @@ struct GroundPlane {
   double dynamic_friction = 0.0;  ///< μ_k: otherwise it shrinks by μ_k·depth
 };
 
+/// Contact between bodies (contact_solver.hpp).
+struct ContactSettings {
+  double static_friction = 0.0;   ///< μ_s between grains
+  double dynamic_friction = 0.0;  ///< μ_k between grains, ≤ μ_s
+  /// A sphere pair becomes a contact when its gap is below the distance its spheres can move
+  /// in the substep plus this [m].
+  double margin = 1e-5;
+};
+
 struct Model {
   Particles particles;
+  /// Grains that touch: soft bodies own particles and tets above, rigid bodies a RigidBody.
+  std::vector<Body> bodies;
+  std::vector<RigidBody> rigid_bodies;
+  std::vector<Collider> colliders;
+  ContactSettings contact;
   std::vector<DistanceConstraint> distances;
   std::vector<TetVolumeConstraint> volumes;
   std::vector<NeoHookeanTet> neo_hookean;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "xpbd/contact_solver.hpp"
 #include "xpbd/damped_update.hpp"
 #include "xpbd/distance_constraint.hpp"
 #include "xpbd/energy.hpp"
@@ -57,13 +58,17 @@ Solver::Solver(Model& model, const SolverSettings& settings) : model_(model), se
   for (const Attachment& a : model.attachments)
     if (a.particle < 0 || a.particle >= p.size())
       throw std::invalid_argument("Solver: attachment names particle " + std::to_string(a.particle));
+  if (!model.bodies.empty() || !model.colliders.empty()) contacts_ = std::make_unique<ContactSolver>(model);
   coloring_distance_ = color_constraints<2>(model.distances, p.size());
   coloring_volume_ = color_constraints<4>(model.volumes, p.size());
   coloring_neo_hookean_ = color_constraints<4>(model.neo_hookean, p.size());
 }
 
+Solver::~Solver() = default;
+
 void Solver::step() {
   const double h = settings_.time_step / settings_.substeps;
+  if (contacts_) contacts_->begin_step(time(), settings_.time_step);
   for (substep_ = 0; substep_ < settings_.substeps; ++substep_) substep(h);
   if (settings_.diagnostics) diagnostics_ = measure(h);
   ++step_;
@@ -79,9 +84,18 @@ void Solver::substep(double h) {
     impulse_neo_hookean_.assign(model_.neo_hookean.size(), Eigen::Matrix<double, 3, 4>::Zero());
   lambda_attachment_.assign(model_.attachments.size(), Vec3::Zero());
   if (settings_.diagnostics) x_predicted_ = model_.particles.x;
-  for (int k = 0; k < settings_.iterations; ++k) iterate(h);
+  if (contacts_) contacts_->begin_substep(time() + substep_ * h, h, x_previous_);
+  for (int k = 0; k < settings_.iterations; ++k) {
+    iterate(h);
+    if (contacts_) contacts_->project(x_previous_);
+  }
   Particles& p = model_.particles;
   p.v = (p.x - x_previous_) / h;
+  for (RigidBody& body : model_.rigid_bodies) update_velocities(body, h);
+  if (contacts_) {
+    contacts_->end_substep(substep_ + 1 == settings_.substeps);
+    contacts_->solve_velocities();
+  }
   check_positions();
 }
 
@@ -99,6 +113,7 @@ void Solver::predict(double h) {
     p.v.row(i) += h * acceleration.transpose();
     p.x.row(i) += h * p.v.row(i);
   }
+  for (RigidBody& body : model_.rigid_bodies) integrate(body, model_.gravity, h);
 }
 
 template <class Project>
@@ -281,6 +296,11 @@ void Solver::check_positions() const {
       throw SimulationError("step " + std::to_string(step_) + ", substep " +
                             std::to_string(substep_) + ": particle " + std::to_string(i) +
                             " has a non-finite position (check its velocity, mass and forces)");
+  const auto& rigid = model_.rigid_bodies;
+  for (size_t b = 0; b < rigid.size(); ++b)
+    if (!rigid[b].x.allFinite() || !rigid[b].q.coeffs().allFinite())
+      throw SimulationError("step " + std::to_string(step_) + ", substep " + std::to_string(substep_) +
+                            ": rigid body " + std::to_string(b) + " has a non-finite pose");
 }
 
 void Solver::fail(const char* constraint_type, int index) const {
@@ -373,7 +393,7 @@ StepDiagnostics Solver::measure(double h) const {
   for (int i = 0; i < x.rows(); ++i)
     if (w[i] > 0.0) d.primal_residual += ((x.row(i) - x_predicted_.row(i)) / w[i] - impulse.row(i)).squaredNorm();
   d.primal_residual = std::sqrt(d.primal_residual);
-  d.kinetic_energy = kinetic_energy(model_.particles);
+  d.kinetic_energy = kinetic_energy(model_);
   d.gravitational_energy = gravitational_energy(model_);
   d.elastic_energy = elastic_energy(model_);
   d.max_speed = max_speed(model_.particles);

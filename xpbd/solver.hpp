@@ -9,6 +9,7 @@
 // construction: build a new solver after adding or removing constraints.
 #pragma once
 
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -70,16 +71,23 @@ class SimulationError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+class ContactSolver;
+
 class Solver {
  public:
   /// Throws std::invalid_argument for settings out of range or a method the model cannot use.
   Solver(Model& model, const SolverSettings& settings);
+  ~Solver();
 
   /// Advances the model by settings().time_step. Throws SimulationError on NaN or infinity.
   void step();
 
   const SolverSettings& settings() const { return settings_; }
   long steps_taken() const { return step_; }
+  /// Simulated time at the start of the next step [s].
+  double time() const { return step_ * settings_.time_step; }
+  /// The contact solver, or null when the model has no bodies and no colliders.
+  const ContactSolver* contacts() const { return contacts_.get(); }
   /// Figures of the last step; computed only when settings().diagnostics is on.
   const StepDiagnostics& diagnostics() const { return diagnostics_; }
 
@@ -109,6 +117,7 @@ class Solver {
   /// ∇C_Dᵀλ_D + ∇C_Hᵀλ_H per tet as last applied (one column per vertex); primal correction only
   std::vector<Eigen::Matrix<double, 3, 4>> impulse_neo_hookean_;
   std::vector<Vec3> lambda_attachment_;
+  std::unique_ptr<ContactSolver> contacts_;
   Coloring coloring_distance_, coloring_volume_, coloring_neo_hookean_;
   long step_ = 0;
   int substep_ = 0;

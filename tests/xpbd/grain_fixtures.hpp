@@ -1,0 +1,69 @@
+// A grain-sized body for the contact tests, without the grains module: a 7 × 3 × 2 mm box
+// (tet mesh) with ten collision spheres of radius 1 mm in two rows along its length, so the
+// sphere union spans the box. Lying flat, its lowest point is 1 mm below the sphere centres.
+#pragma once
+
+#include "xpbd/body.hpp"
+#include "xpbd/model.hpp"
+
+namespace rice::xpbd::testing {
+
+constexpr double kGrainLength = 7e-3, kGrainWidth = 3e-3, kGrainThickness = 2e-3;
+constexpr double kGrainDensity = 1.1e3;
+
+/// The box mesh with its lower corner at `corner`, and its spheres.
+inline TetMesh grain_mesh(const Vec3& corner) {
+  TetMesh mesh = make_box_tet_mesh(Vec3(kGrainLength, kGrainWidth, kGrainThickness), 4, 2, 1);
+  mesh.V.rowwise() += corner.transpose();
+  return mesh;
+}
+
+inline SphereSet grain_spheres(const Vec3& corner) {
+  const double r = 0.5 * kGrainThickness;
+  SphereSet spheres{Positions(10, 3), Eigen::VectorXd::Constant(10, r)};
+  for (int k = 0; k < 5; ++k)
+    for (int row = 0; row < 2; ++row)
+      spheres.centres.row(2 * k + row) =
+          corner.transpose() + Eigen::RowVector3d(r + k * (kGrainLength - 2 * r) / 4.0,
+                                                  r + row * (kGrainWidth - 2 * r), r);
+  return spheres;
+}
+
+/// Adds one grain, rigid or soft (E = 50 kPa, ν = 0.3), its lower corner at `corner`.
+inline int add_grain(Model& model, BodyKind kind, const Vec3& corner, double young = 5e4) {
+  if (kind == BodyKind::kRigid) return add_rigid_body(model, grain_mesh(corner), kGrainDensity, grain_spheres(corner));
+  return add_soft_body(model, grain_mesh(corner), kGrainDensity, lame_from_young_poisson(young, 0.3), 0.0,
+                       grain_spheres(corner));
+}
+
+/// Centre of mass of body b.
+inline Vec3 body_centre(const Model& model, int b) {
+  const Body& body = model.bodies[b];
+  if (body.kind == BodyKind::kRigid) return model.rigid_bodies[body.rigid_body].x;
+  const Eigen::VectorXd w = model.particles.w.segment(body.first_particle, body.particle_count);
+  const Eigen::VectorXd m = w.cwiseInverse();
+  return (model.particles.x.middleRows(body.first_particle, body.particle_count).transpose() * m) / m.sum();
+}
+
+/// Total linear momentum of bodies and free particles.
+inline Vec3 linear_momentum(const Model& model) {
+  Vec3 p = Vec3::Zero();
+  for (int i = 0; i < model.particles.size(); ++i)
+    if (model.particles.w[i] > 0.0) p += model.particles.v.row(i).transpose() / model.particles.w[i];
+  for (const RigidBody& b : model.rigid_bodies)
+    if (b.inverse_mass > 0.0) p += b.v / b.inverse_mass;
+  return p;
+}
+
+/// A collider at rest.
+inline Collider half_space(const Vec3& normal, double offset, double mu_s, double mu_k) {
+  Collider c;
+  c.shape = ColliderShape::kHalfSpace;
+  c.motion[0].rotation = Quat::FromTwoVectors(Vec3::UnitZ(), normal);
+  c.motion[0].translation = offset * normal;
+  c.static_friction = mu_s;
+  c.dynamic_friction = mu_k;
+  return c;
+}
+
+}  // namespace rice::xpbd::testing

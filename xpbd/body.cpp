@@ -1,0 +1,181 @@
+// Building soft and rigid bodies and the four contact operations on them; see body.hpp.
+#include "xpbd/body.hpp"
+
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "xpbd/model.hpp"
+#include "xpbd/tet_stencil.hpp"
+
+namespace rice::xpbd {
+namespace {
+
+void require_spheres(const SphereSet& spheres, const char* who) {
+  if (spheres.centres.rows() != spheres.radii.size() || spheres.radii.size() == 0)
+    throw std::invalid_argument(std::string(who) + ": need one radius per sphere centre and at least one sphere");
+  for (int s = 0; s < spheres.radii.size(); ++s)
+    if (!(spheres.radii[s] > 0.0) || !std::isfinite(spheres.radii[s]) || !spheres.centres.row(s).allFinite())
+      throw std::invalid_argument(std::string(who) + ": sphere " + std::to_string(s) +
+                                  " needs a finite centre and a positive finite radius");
+}
+
+/// Barycentric weights of p in the tet, and how far outside it p lies (0 inside): the most
+/// negative weight, negated.
+Eigen::Vector4d barycentric(const Vec12& corners, const Vec3& p, double* outside) {
+  const Vec3 x0 = corners.segment<3>(0);
+  const Vec3 b = edge_matrix(corners).inverse() * (p - x0);
+  const Eigen::Vector4d w(1.0 - b.sum(), b.x(), b.y(), b.z());
+  *outside = std::max(0.0, -w.minCoeff());
+  return w;
+}
+
+}  // namespace
+
+int add_rigid_body(Model& model, const TetMesh& mesh, double density, const SphereSet& spheres) {
+  require_spheres(spheres, "add_rigid_body");
+  const RigidBody rigid = make_rigid_body(mesh.V, mesh.T, density);
+  Body body;
+  body.kind = BodyKind::kRigid;
+  body.rigid_body = static_cast<int>(model.rigid_bodies.size());
+  for (int s = 0; s < spheres.radii.size(); ++s) {
+    body.local_centres.push_back(rigid.to_local(spheres.centres.row(s).transpose()));
+    body.radii.push_back(spheres.radii[s]);
+  }
+  model.rigid_bodies.push_back(rigid);
+  model.bodies.push_back(std::move(body));
+  return static_cast<int>(model.bodies.size()) - 1;
+}
+
+int add_soft_body(Model& model, const TetMesh& mesh, double density, const LameParameters& material,
+                  double rayleigh_time, const SphereSet& spheres) {
+  require_spheres(spheres, "add_soft_body");
+  // Build the body alone, then append it with its particle indices shifted.
+  Model single;
+  single.particles = make_particles(mesh, density);
+  add_neo_hookean_tets(single, mesh, material, rayleigh_time);
+  const int offset = model.particles.size();
+  Particles& p = model.particles;
+  const int total = offset + single.particles.size();
+  p.x.conservativeResize(total, 3);
+  p.v.conservativeResize(total, 3);
+  p.w.conservativeResize(total);
+  p.x.bottomRows(single.particles.size()) = single.particles.x;
+  p.v.bottomRows(single.particles.size()) = single.particles.v;
+  p.w.tail(single.particles.size()) = single.particles.w;
+  for (NeoHookeanTet tet : single.neo_hookean) {
+    for (int& i : tet.particles) i += offset;
+    model.neo_hookean.push_back(tet);
+  }
+  Body body;
+  body.kind = BodyKind::kSoft;
+  body.first_particle = offset;
+  body.particle_count = single.particles.size();
+  for (int s = 0; s < spheres.radii.size(); ++s) {
+    const Vec3 centre = spheres.centres.row(s).transpose();
+    double best = std::numeric_limits<double>::infinity();
+    for (int t = 0; t < mesh.T.rows() && best > 0.0; ++t) {
+      double outside;
+      const Eigen::Vector4d w = barycentric(tet_positions(mesh.V, mesh.T, t), centre, &outside);
+      if (outside < best) {
+        best = outside;
+        if (body.anchors.size() == static_cast<size_t>(s)) {
+          body.anchors.emplace_back();
+          body.weights.emplace_back();
+        }
+        body.anchors[s] = {mesh.T(t, 0) + offset, mesh.T(t, 1) + offset, mesh.T(t, 2) + offset,
+                           mesh.T(t, 3) + offset};
+        body.weights[s] = w;
+      }
+    }
+    body.radii.push_back(spheres.radii[s]);
+  }
+  model.bodies.push_back(std::move(body));
+  return static_cast<int>(model.bodies.size()) - 1;
+}
+
+Vec3 sphere_centre(const Model& model, const Body& body, int s) {
+  if (body.kind == BodyKind::kRigid) return model.rigid_bodies[body.rigid_body].world_point(body.local_centres[s]);
+  Vec3 c = Vec3::Zero();
+  for (int k = 0; k < 4; ++k) c += body.weights[s][k] * model.particles.x.row(body.anchors[s][k]).transpose();
+  return c;
+}
+
+Vec3 previous_point(const Model& model, const Body& body, int s, const Vec3& point, const Positions& x_previous) {
+  if (body.kind == BodyKind::kRigid) {
+    const RigidBody& rigid = model.rigid_bodies[body.rigid_body];
+    return rigid.previous_world_point(rigid.to_local(point));
+  }
+  // The point moves with the embedding of the sphere's centre.
+  Vec3 displacement = Vec3::Zero();
+  for (int k = 0; k < 4; ++k) {
+    const int i = body.anchors[s][k];
+    displacement += body.weights[s][k] * (model.particles.x.row(i) - x_previous.row(i)).transpose();
+  }
+  return point - displacement;
+}
+
+double inverse_mass_at(const Model& model, const Body& body, int s, const Vec3& point, const Vec3& n) {
+  if (body.kind == BodyKind::kRigid) {
+    const RigidBody& rigid = model.rigid_bodies[body.rigid_body];
+    return generalized_inverse_mass(rigid, point - rigid.x, n);
+  }
+  // Δx_k = w_k b_k p moves the embedded point by Σ b_k² w_k p.
+  double w = 0.0;
+  for (int k = 0; k < 4; ++k) w += body.weights[s][k] * body.weights[s][k] * model.particles.w[body.anchors[s][k]];
+  return w;
+}
+
+void apply_impulse_at(Model& model, const Body& body, int s, const Vec3& point, const Vec3& p) {
+  if (body.kind == BodyKind::kRigid) {
+    RigidBody& rigid = model.rigid_bodies[body.rigid_body];
+    apply_positional_impulse(rigid, point - rigid.x, p);
+    return;
+  }
+  for (int k = 0; k < 4; ++k) {
+    const int i = body.anchors[s][k];
+    model.particles.x.row(i) += (model.particles.w[i] * body.weights[s][k]) * p.transpose();
+  }
+}
+
+Vec3 material_coordinates(const Model& model, const Body& body, int s, const Vec3& point, const Positions* x_previous) {
+  if (body.kind == BodyKind::kRigid) {
+    const RigidBody& rigid = model.rigid_bodies[body.rigid_body];
+    return x_previous ? Vec3(rigid.q_previous.conjugate() * (point - rigid.x_previous)) : rigid.to_local(point);
+  }
+  Vec3 centre = Vec3::Zero();
+  const Positions& x = x_previous ? *x_previous : model.particles.x;
+  for (int k = 0; k < 4; ++k) centre += body.weights[s][k] * x.row(body.anchors[s][k]).transpose();
+  return point - centre;
+}
+
+Vec3 material_point(const Model& model, const Body& body, int s, const Vec3& coordinates) {
+  if (body.kind == BodyKind::kRigid) return model.rigid_bodies[body.rigid_body].world_point(coordinates);
+  return sphere_centre(model, body, s) + coordinates;
+}
+
+Vec3 velocity_at(const Model& model, const Body& body, int s, const Vec3& point) {
+  if (body.kind == BodyKind::kRigid) {
+    const RigidBody& rigid = model.rigid_bodies[body.rigid_body];
+    return rigid.v + rigid.omega.cross(point - rigid.x);
+  }
+  Vec3 v = Vec3::Zero();
+  for (int k = 0; k < 4; ++k) v += body.weights[s][k] * model.particles.v.row(body.anchors[s][k]).transpose();
+  return v;
+}
+
+void apply_velocity_impulse_at(Model& model, const Body& body, int s, const Vec3& point, const Vec3& p) {
+  if (body.kind == BodyKind::kRigid) {
+    RigidBody& rigid = model.rigid_bodies[body.rigid_body];
+    if (rigid.inverse_mass == 0.0) return;
+    rigid.v += rigid.inverse_mass * p;
+    rigid.omega += rigid.apply_inverse_inertia((point - rigid.x).cross(p));
+    return;
+  }
+  for (int k = 0; k < 4; ++k) {
+    const int i = body.anchors[s][k];
+    model.particles.v.row(i) += (model.particles.w[i] * body.weights[s][k]) * p.transpose();
+  }
+}
+
+}  // namespace rice::xpbd

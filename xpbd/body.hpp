@@ -1,0 +1,80 @@
+// Bodies that touch: each grain of a many-grain model is one body, soft (its own particles and
+// Neo-Hookean tets in the shared model) or rigid (a RigidBody, no tet solves). Both collide
+// through the same collision spheres: a rigid body carries their centres in its body frame, a
+// soft body embeds each centre in one of its tets with barycentric weights, so the spheres
+// follow the deformation. The contact code sees only the four operations at the end of this
+// file and does not care which kind it touches.
+//
+// Why spheres: a union of 10–30 spheres fitted inside a grain (grains/collision_spheres.hpp)
+// is a closed volume, so no edge or face can slip between vertices, and a sphere pair or a
+// sphere against an analytic shape has a closed-form distance and normal. This is the
+// multi-sphere model of grain mechanics (DEM) for elongated kernels such as rice.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "xpbd/rigid_body.hpp"
+#include "xpbd/tet_mesh.hpp"
+
+namespace rice::xpbd {
+
+struct Particles;
+struct Model;
+struct LameParameters;
+
+enum class BodyKind { kSoft, kRigid };
+
+struct Body {
+  BodyKind kind = BodyKind::kRigid;
+  int rigid_body = -1;        ///< index into Model::rigid_bodies (rigid)
+  int first_particle = 0;     ///< soft: its particles are [first_particle, first_particle + particle_count)
+  int particle_count = 0;
+  std::vector<double> radii;  ///< collision sphere radii [m]
+  /// Rigid: sphere centres in the body frame.
+  std::vector<Vec3> local_centres;
+  /// Soft: each centre as Σ weights[k] x[anchors[k]] over the corners of the tet holding it.
+  std::vector<std::array<int, 4>> anchors;
+  std::vector<Eigen::Vector4d> weights;
+  int sphere_count() const { return static_cast<int>(radii.size()); }
+};
+
+/// Collision spheres given in the mesh frame: one row of `centres` and one radius each.
+struct SphereSet {
+  Positions centres;
+  Eigen::VectorXd radii;
+};
+
+/// Adds a rigid body made of `mesh` (mass properties from density ρ [kg/m³]) with its
+/// collision spheres, at rest where the mesh lies. Returns the body's index.
+int add_rigid_body(Model& model, const TetMesh& mesh, double density, const SphereSet& spheres);
+
+/// Adds a soft body: the mesh's vertices as new particles (lumped masses), one Neo-Hookean
+/// pair per tet (add_neo_hookean_tets) and the collision spheres embedded in the tets that
+/// hold their centres (the nearest tet for a centre outside the mesh). Returns its index.
+int add_soft_body(Model& model, const TetMesh& mesh, double density, const LameParameters& material,
+                  double rayleigh_time, const SphereSet& spheres);
+
+/// The operations contact needs, for either kind of body. `point` is a world point attached
+/// to sphere s (a contact point on its surface).
+Vec3 sphere_centre(const Model& model, const Body& body, int s);
+/// Where the material point now at `point` was at the start of the substep.
+Vec3 previous_point(const Model& model, const Body& body, int s, const Vec3& point,
+                    const Positions& x_previous);
+/// Inverse mass the body shows to a positional impulse along the unit vector n at `point`.
+double inverse_mass_at(const Model& model, const Body& body, int s, const Vec3& point, const Vec3& n);
+/// Applies the positional impulse p [kg m] at `point`.
+void apply_impulse_at(Model& model, const Body& body, int s, const Vec3& point, const Vec3& p);
+/// Material coordinates of the point of sphere s's body that is at `point`: body-frame
+/// coordinates (rigid) or the offset from the sphere's centre (soft), taken at the current
+/// positions, or at the substep's start when `x_previous` is given.
+Vec3 material_coordinates(const Model& model, const Body& body, int s, const Vec3& point,
+                          const Positions* x_previous = nullptr);
+/// Where the material point with those coordinates is now.
+Vec3 material_point(const Model& model, const Body& body, int s, const Vec3& coordinates);
+/// Velocity of the material point at `point`.
+Vec3 velocity_at(const Model& model, const Body& body, int s, const Vec3& point);
+/// Applies the impulse p [kg m/s] at `point` to the velocities.
+void apply_velocity_impulse_at(Model& model, const Body& body, int s, const Vec3& point, const Vec3& p);
+
+}  // namespace rice::xpbd

@@ -1,0 +1,88 @@
+// Analytic signed distances and keyframed motion of colliders; see collider.hpp.
+#include "xpbd/collider.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace rice::xpbd {
+namespace {
+
+SignedDistance sphere_distance(const Vec3& p, double radius) {
+  const double length = p.norm();
+  const Vec3 normal = length > 0.0 ? Vec3(p / length) : Vec3::UnitZ();
+  return {length - radius, normal};
+}
+
+/// Box of half extents b: outside, the distance to the nearest point of the box; inside, minus
+/// the distance to the nearest face.
+SignedDistance box_distance(const Vec3& p, const Vec3& b) {
+  const Vec3 q = p.cwiseAbs() - b;
+  if ((q.array() > 0.0).any()) {
+    const Vec3 outside = q.cwiseMax(0.0);
+    const double distance = outside.norm();
+    return {distance, outside.cwiseProduct(p.cwiseSign()) / distance};
+  }
+  int axis;
+  const double distance = q.maxCoeff(&axis);
+  Vec3 normal = Vec3::Zero();
+  normal[axis] = p[axis] >= 0.0 ? 1.0 : -1.0;
+  return {distance, normal};
+}
+
+}  // namespace
+
+ColliderKeyframe collider_pose(const Collider& collider, double time) {
+  const auto& keys = collider.motion;
+  if (time <= keys.front().time) return keys.front();
+  if (time >= keys.back().time) return keys.back();
+  const auto next = std::upper_bound(keys.begin(), keys.end(), time,
+                                     [](double t, const ColliderKeyframe& k) { return t < k.time; });
+  const ColliderKeyframe& a = *(next - 1);
+  const ColliderKeyframe& b = *next;
+  const double s = (time - a.time) / (b.time - a.time);
+  return {time, (1.0 - s) * a.translation + s * b.translation, a.rotation.slerp(s, b.rotation)};
+}
+
+SignedDistance local_signed_distance(const Collider& collider, const Vec3& p) {
+  switch (collider.shape) {
+    case ColliderShape::kHalfSpace:
+      return {p.z(), Vec3::UnitZ()};
+    case ColliderShape::kSphere:
+      return sphere_distance(p, collider.radius);
+    case ColliderShape::kBox:
+      return box_distance(p, collider.half_extents);
+    case ColliderShape::kCapsule: {
+      const double z = std::clamp(p.z(), -collider.half_length, collider.half_length);
+      return sphere_distance(p - Vec3(0.0, 0.0, z), collider.radius);
+    }
+  }
+  throw std::logic_error("local_signed_distance: unknown collider shape");
+}
+
+void validate(const Collider& c, int index) {
+  const std::string name = "collider " + std::to_string(index);
+  const auto positive = [](double value) { return std::isfinite(value) && value > 0.0; };
+  const bool sizes_ok = c.shape == ColliderShape::kHalfSpace ||
+                        (c.shape == ColliderShape::kSphere && positive(c.radius)) ||
+                        (c.shape == ColliderShape::kBox && positive(c.half_extents.minCoeff()) &&
+                         c.half_extents.allFinite()) ||
+                        (c.shape == ColliderShape::kCapsule && positive(c.radius) && positive(c.half_length));
+  if (!sizes_ok) throw std::invalid_argument(name + ": its sizes must be positive and finite");
+  if (!(c.static_friction >= 0.0 && c.dynamic_friction >= 0.0 && c.dynamic_friction <= c.static_friction))
+    throw std::invalid_argument(name + ": need 0 <= dynamic friction <= static friction, got " +
+                                std::to_string(c.dynamic_friction) + " and " + std::to_string(c.static_friction));
+  if (c.motion.empty()) throw std::invalid_argument(name + ": needs at least one keyframe");
+  for (size_t k = 0; k < c.motion.size(); ++k) {
+    const ColliderKeyframe& key = c.motion[k];
+    if (!std::isfinite(key.time) || !key.translation.allFinite() || !key.rotation.coeffs().allFinite() ||
+        std::abs(key.rotation.norm() - 1.0) > 1e-9)
+      throw std::invalid_argument(name + ": keyframe " + std::to_string(k) +
+                                  " needs a finite time and translation and a unit rotation");
+    if (k > 0 && !(key.time > c.motion[k - 1].time))
+      throw std::invalid_argument(name + ": keyframe times must increase (keyframe " + std::to_string(k) + ")");
+  }
+}
+
+}  // namespace rice::xpbd

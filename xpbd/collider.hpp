@@ -1,0 +1,55 @@
+// Static or kinematic colliders that grains touch: a half-space, a sphere, a box and a capsule,
+// each an analytic signed distance in its own frame, placed in the world by a rigid motion
+// prescribed over time (keyframes). A collider has infinite mass; friction against it uses the
+// displacement of its surface over the substep.
+#pragma once
+
+#include <vector>
+
+#include "xpbd/rigid_body.hpp"
+
+namespace rice::xpbd {
+
+enum class ColliderShape {
+  kHalfSpace,  ///< solid below the local plane z = 0 (normal +z)
+  kSphere,     ///< radius about the local origin
+  kBox,        ///< half_extents about the local origin
+  kCapsule,    ///< radius about the local segment z ∈ [−half_length, half_length]
+};
+
+/// A pose of the collider's frame at a time: world = translation + rotation · local.
+struct ColliderKeyframe {
+  double time = 0.0;  ///< [s]
+  Vec3 translation = Vec3::Zero();
+  Quat rotation = Quat::Identity();
+};
+
+struct Collider {
+  ColliderShape shape = ColliderShape::kHalfSpace;
+  Vec3 half_extents = Vec3::Zero();  ///< box [m]
+  double radius = 0.0;               ///< sphere, capsule [m]
+  double half_length = 0.0;          ///< capsule [m]
+  /// Poses at increasing times, interpolated linearly (translation) and by slerp (rotation),
+  /// held constant before the first and after the last. One keyframe: a static collider.
+  std::vector<ColliderKeyframe> motion{ColliderKeyframe{}};
+  double static_friction = 0.0;   ///< μ_s against grains
+  double dynamic_friction = 0.0;  ///< μ_k against grains
+};
+
+/// The collider's pose at time t.
+ColliderKeyframe collider_pose(const Collider& collider, double time);
+
+/// Signed distance φ (negative inside) and its gradient, the outward unit normal, at a point.
+struct SignedDistance {
+  double distance;
+  Vec3 normal;
+};
+
+/// φ of the collider's shape at a point given in the collider's frame.
+SignedDistance local_signed_distance(const Collider& collider, const Vec3& local_point);
+
+/// Throws std::invalid_argument naming the collider for sizes that are not positive and
+/// finite, friction coefficients below zero or μ_k > μ_s, or keyframe times not increasing.
+void validate(const Collider& collider, int index);
+
+}  // namespace rice::xpbd

@@ -1,0 +1,107 @@
+// Contact between bodies (body.hpp) and against colliders (collider.hpp) as XPBD inequality
+// constraints with Coulomb friction at position level.
+//
+// Once per step, a broad phase (broad_phase.hpp) over body boxes padded by the distance each
+// body can move in the step gives candidate sphere pairs and sphere–collider pairs. At the
+// start of every substep each candidate whose gap at the substep's start is smaller than the
+// distance its two sides can move in the substep becomes a contact with a normal n fixed from
+// the start positions (a speculative contact): the half-space constraint
+//   C = n·(c_a − c_b) − (r_a + r_b) ≥ 0   (against a collider: C = n·(c_a − q) − r_a ≥ 0)
+// cannot be crossed however fast the bodies move, so nothing tunnels. Each Gauss–Seidel
+// sweep projects C with mass weighting (α = 0, MMCJK20 eq. 2–5) and then friction: the
+// relative tangential displacement of the contact points over the substep, d_t, is cancelled
+// by a tangential positional impulse (Macklin et al. 2014 eq. 24 written with accumulated
+// multipliers), capped at μ_k λ_n while the two bodies slide. While they stick, friction
+// instead pulls together two anchors, the material points of either side that touched when
+// sticking began, so that what one Gauss–Seidel sweep leaves over does not add up into creep;
+// they start to slide when the net friction impulse of their contacts over a step exceeds
+// μ_s Σλ_n (end_substep).
+// Normals are projected for all contacts before friction, so friction sees the sweep's normal
+// impulses. After the velocity update, contacts that pushed lose their relative normal
+// velocity (restitution 0).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "xpbd/model.hpp"
+
+namespace rice::xpbd {
+
+struct ContactStatistics {
+  int candidates = 0;           ///< sphere pairs and sphere–collider pairs from the broad phase
+  int contacts = 0;             ///< speculative contacts of the last substep
+  double max_penetration = 0.0;  ///< largest −C over them at the end of the last substep [m]
+};
+
+class ContactSolver {
+ public:
+  /// Validates the colliders and the contact settings (std::invalid_argument).
+  explicit ContactSolver(Model& model);
+
+  /// Broad phase for the step [time, time + dt].
+  void begin_step(double time, double dt);
+  /// Contacts for the substep [time, time + h]; call after prediction, with the positions at
+  /// the substep's start.
+  void begin_substep(double time, double h, const Positions& x_previous);
+  /// One Gauss–Seidel sweep over the contacts: all normals, then all frictions.
+  void project(const Positions& x_previous);
+  /// After the velocity update: removes the relative normal velocity of every contact that
+  /// pushed in this substep (restitution 0).
+  void solve_velocities();
+  /// Records which body pairs slide, for the next substep's friction coefficient, and the
+  /// statistics; call after the last sweep of a substep.
+  void end_substep(bool last_of_step);
+
+  const ContactStatistics& statistics() const { return statistics_; }
+
+ private:
+  /// One candidate: sphere s_a of body a against sphere s_b of body b, or against the
+  /// collider collider_index(b) when is_collider(b). Sorted by key, so the candidates of one
+  /// body pair are contiguous. `sliding` persists while the pair stays a candidate.
+  struct Candidate {
+    std::array<int, 4> key;  ///< (a, b, s_a, s_b)
+    bool sliding = false;
+    bool anchored = false;  ///< sticking, with anchors (material coordinates on a and b)
+    Vec3 anchor_a = Vec3::Zero(), anchor_b = Vec3::Zero();
+    double step_normal = 0.0;             ///< Σλ_n over the step's substeps so far
+    Vec3 step_friction = Vec3::Zero();    ///< Σ friction impulses over them
+  };
+  static int collider_key(int collider) { return -1 - collider; }
+  static bool is_collider(int b) { return b < 0; }
+  static int collider_index(int b) { return -1 - b; }
+  struct Contact {
+    int candidate;
+    Vec3 normal;          ///< world (sphere pair) or collider frame
+    Vec3 collider_point;  ///< collider frame: the surface point under the sphere at the start
+    double lambda_normal = 0.0, lambda_tangent = 0.0;
+    Vec3 friction = Vec3::Zero();  ///< sum of the friction impulses this substep
+    bool capped = false;  ///< sliding friction reached μ_k λ_n in the last sweep
+  };
+  /// A contact's normal (world) and points at the current positions: p_a on a's sphere,
+  /// p_b on b's sphere or on the collider, where that collider point was at the start.
+  struct ContactPoints {
+    const Body* a = nullptr;
+    const Body* b = nullptr;  ///< null for a collider
+    Vec3 n, pa, pb, pb_start = Vec3::Zero();
+  };
+
+  void find_candidates(double time, double dt);
+  ContactPoints locate(const Contact& contact) const;
+  double inverse_mass(const Contact& contact, const ContactPoints& p, const Vec3& direction) const;
+  void push(const Contact& contact, const ContactPoints& p, const Vec3& impulse);
+  Vec3 tangential_slip(const Contact& contact, const ContactPoints& p, const Positions& x_previous) const;
+  Vec3 anchored_slip(Candidate& candidate, const ContactPoints& p, const Positions& x_previous) const;
+  void project_normal(Contact& contact);
+  void project_friction(Contact& contact, const Positions& x_previous);
+
+  Model& model_;
+  std::vector<Candidate> candidates_;
+  std::vector<Contact> contacts_;
+  std::vector<ColliderKeyframe> pose_start_, pose_end_;  ///< collider poses at the substep's ends
+  ContactStatistics statistics_;
+  bool has_friction_ = false;
+  double h_ = 0.0;  ///< the current substep's length
+};
+
+}  // namespace rice::xpbd

@@ -1,0 +1,64 @@
+// Rigid bodies for XPBD (Müller, Macklin, Chentanez, Jeschke & Kim 2020, "Detailed Rigid Body
+// Simulation with Extended Position Based Dynamics", MMCJK20 below): the pose (centre of mass
+// x, orientation q), the velocities (v, ω), mass and principal inertia, the substep
+// integration and velocity update of Algorithm 2, and the positional impulse of §3.3 through
+// which contacts move a body. A rigid grain has six degrees of freedom and no tet solves.
+#pragma once
+
+#include <Eigen/Geometry>
+
+#include "xpbd/types.hpp"
+
+namespace rice::xpbd {
+
+using Quat = Eigen::Quaterniond;
+
+struct RigidBody {
+  Vec3 x = Vec3::Zero();      ///< centre of mass [m]
+  Quat q = Quat::Identity();  ///< orientation: world = x + q · local
+  Vec3 v = Vec3::Zero();      ///< [m/s]
+  Vec3 omega = Vec3::Zero();  ///< angular velocity, world frame [rad/s]
+  double inverse_mass = 0.0;  ///< 1/m [1/kg]; 0 makes the body immovable
+  Vec3 inverse_inertia = Vec3::Zero();  ///< 1/I of the principal moments, body frame [1/(kg m²)]
+  Vec3 x_previous = Vec3::Zero();      ///< pose at the start of the substep
+  Quat q_previous = Quat::Identity();
+
+  Vec3 world_point(const Vec3& local) const { return x + q * local; }
+  Vec3 previous_world_point(const Vec3& local) const { return x_previous + q_previous * local; }
+  Vec3 to_local(const Vec3& world) const { return q.conjugate() * (world - x); }
+  /// I⁻¹ u in the world frame: R diag(1/I) Rᵀ u.
+  Vec3 apply_inverse_inertia(const Vec3& u) const {
+    return q * inverse_inertia.cwiseProduct(q.conjugate() * u);
+  }
+};
+
+/// Mass, centre of mass and inertia tensor about the centre (mesh axes) of a tet mesh of
+/// density ρ, from the exact second moment of each tetrahedron:
+///   ∫_T x xᵀ dV = V/20 (Σᵢ xᵢxᵢᵀ + s sᵀ), s = Σᵢ xᵢ,   I = tr(C) 1 − C.
+struct MassProperties {
+  double mass = 0.0;
+  Vec3 centre = Vec3::Zero();
+  Mat3 inertia = Mat3::Zero();
+};
+MassProperties mass_properties(const Positions& V, const Tets& T, double density);
+
+/// A body at rest where the mesh lies: x at its centre of mass, q the rotation from the
+/// principal frame (body frame) to the mesh frame. Throws for a mesh with no positive volume.
+RigidBody make_rigid_body(const Positions& V, const Tets& T, double density);
+
+/// Algorithm 2, first loop: remembers the pose, then v += h g, x += h v,
+/// ω += h I⁻¹(−ω × Iω) (torque-free gyroscopic term) and q += h/2 [ω, 0] q, normalised.
+void integrate(RigidBody& body, const Vec3& gravity, double h);
+
+/// Algorithm 2, velocity update: v = (x − xₚ)/h, ω = 2 vec(q qₚ⁻¹)/h (sign of the real part).
+void update_velocities(RigidBody& body, double h);
+
+/// MMCJK20 eq. 2–3: w = 1/m + (r × n)ᵀ I⁻¹ (r × n), the inverse mass the body shows to a
+/// positional correction along the unit vector n applied at r = point − x.
+double generalized_inverse_mass(const RigidBody& body, const Vec3& r, const Vec3& n);
+
+/// MMCJK20 eq. 6–9: a positional impulse p at r = point − x moves x += p/m and turns
+/// q += ½ [I⁻¹(r × p), 0] q, normalised.
+void apply_positional_impulse(RigidBody& body, const Vec3& r, const Vec3& p);
+
+}  // namespace rice::xpbd
