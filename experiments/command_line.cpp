@@ -21,8 +21,8 @@
 #include "experiments/oscillator_study.hpp"
 #include "experiments/water_absorption_figure.hpp"
 #include "experiments/xpbd_stiffness_study.hpp"
+#include "grains/cultivar.hpp"
 #include "grains/mesh_io.hpp"
-#include "grains/water_content.hpp"
 
 namespace rice::experiments {
 namespace {
@@ -70,6 +70,17 @@ CLI::Validator seed_value() {
         return {};
       },
       "in [0, 2^64 - 1]");
+}
+
+// The chosen command's words ("study oscillator", "figure 11"), for messages.
+std::string command_name(const CLI::App& app) {
+  std::string name;
+  for (const CLI::App* command = &app; !command->get_subcommands().empty();) {
+    command = command->get_subcommands().front();
+    if (!name.empty()) name += ' ';
+    name += command->get_name();
+  }
+  return name;
 }
 
 }  // namespace
@@ -302,10 +313,13 @@ int run_command_line(int argc, char** argv) {
                                                     command_line.threads());
     command_line.validate();
     command_line.run();
+    stop_point();  // a Ctrl-C in a phase without stop points (writing, plotting) still stops
   } catch (const CLI::Error& e) {
     return app.exit(e);
   } catch (const Interrupted& e) {
-    std::cerr << "rice: " << e.what() << " during " << activity() << "; the files written so far are complete\n";
+    const std::string doing = activity();  // empty where no progress was reported yet
+    std::cerr << "rice: " << e.what() << " during " << (doing.empty() ? command_name(app) : doing)
+              << "; the files written so far are complete\n";
     return 128 + e.signal();
   } catch (const std::exception& e) {
     std::cerr << "rice: " << e.what() << '\n';

@@ -13,7 +13,8 @@ class App;
 namespace rice::experiments {
 
 /// The whole `rice` command: parses, checks, runs; returns the exit code (0; 1 on an error,
-/// with its message on stderr; 130 or 143 after Ctrl-C or SIGTERM, saying where it stopped).
+/// with its message on stderr; 130 or 143 after Ctrl-C or SIGTERM, saying where it stopped,
+/// even when the signal came after the last stop point of the run).
 int run_command_line(int argc, char** argv);
 
 class CommandLine {
@@ -27,9 +28,9 @@ class CommandLine {
   int threads() const;
 
   /// After a successful parse: the checks that involve several options or read an input
-  /// file, for the chosen command. Throws (CLI::ValidationError naming the option where one
-  /// option is at fault, std::invalid_argument or std::runtime_error otherwise); does no work
-  /// and writes nothing.
+  /// file, for the chosen command. Throws std::invalid_argument naming the setting at fault,
+  /// or std::runtime_error naming an input file that cannot be read; does no work and writes
+  /// nothing. (Single options out of range are refused by the parse itself, naming them.)
   void validate() const;
 
   /// Runs the chosen command (each command validates its settings before it writes).

@@ -315,6 +315,7 @@ do for [scene in 'hanging-cantilever twisted-bar'] {
 }
 unset multiplot
 )");
+  stop_point();  // a Ctrl-C while gnuplot ran (it does not get the signal) stops here
   render_plot(folder, "convergence_resolution", R"(set terminal pngcairo size 1400,500
 set output 'convergence_resolution.png'
 set datafile separator ','
@@ -339,6 +340,7 @@ do for [scene in 'hanging-cantilever twisted-bar'] {
 }
 unset multiplot
 )");
+  stop_point();  // a Ctrl-C while gnuplot ran (it does not get the signal) stops here
   write_file_atomically(folder / "run_info.txt",
                         run_info({{"study", "convergence"},
                                   {"duration_s", cell(s.duration)},

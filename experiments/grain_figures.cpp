@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <string>
 
 #include "experiments/grain_library.hpp"
 #include "experiments/item_loop.hpp"
@@ -68,7 +69,7 @@ void grain_sizes_figure_command(std::uint64_t seed, const std::filesystem::path&
   write_png(folder / "figure8_sections.png", side_by_side(sections, 20));
   write_file_atomically(folder / "run_info.txt",
                         run_info({{"figure", "8"},
-                                  {"seed", cell(static_cast<long>(seed))},
+                                  {"seed", std::to_string(seed)},
                                   {"section_pixel_m", cell(kSectionPixel)},
                                   {"wall_s", cell(seconds_since(start))}}));
 }
@@ -115,7 +116,7 @@ void cultivars_figure_command(std::uint64_t seed, int count, const std::filesyst
   write_png(folder / "figure9_sections.png", side_by_side(sections, 20));
   write_file_atomically(folder / "run_info.txt",
                         run_info({{"figure", "9"},
-                                  {"seed", cell(static_cast<long>(seed))},
+                                  {"seed", std::to_string(seed)},
                                   {"grains_per_cultivar", cell(count)},
                                   {"section_pixel_m", cell(kSectionPixel)},
                                   {"wall_s", cell(seconds_since(start))}}));

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <string>
 
 #include "experiments/item_loop.hpp"
 #include "experiments/output.hpp"
@@ -155,7 +156,7 @@ void grain_library_command(const GrainLibrarySettings& settings, const std::file
                                   {"cultivar", cultivar},
                                   {"count", cell(settings.count)},
                                   {"variants", cell(settings.variants)},
-                                  {"seed", cell(static_cast<long>(settings.seed))},
+                                  {"seed", std::to_string(settings.seed)},
                                   {"generation_wall_s", cell(generation_seconds)},
                                   {"mean_seconds_per_generated_grain", cell(mean_grain_seconds)},
                                   {"mean_level_set_s", cell(mean.level_set)},

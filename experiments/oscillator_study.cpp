@@ -145,6 +145,7 @@ plot 'oscillator.csv' using (xpbd(0) ? $11 : 1/0):7 with linespoints title 'XPBD
      '' using (reference(1) ? $11 : 1/0):7 with points pt 6 ps 1.5 title 'reference, beta > 0'
 unset multiplot
 )");
+  stop_point();  // a Ctrl-C while gnuplot ran (it does not get the signal) stops here
   write_file_atomically(folder / "run_info.txt",
                         run_info({{"study", "oscillator"},
                                   {"mass_kg", cell(settings.mass)},

@@ -43,11 +43,11 @@ OscillationMeasurement simulate_oscillator(const OscillatorSettings& settings, i
 /// Analytic period and decay rate for the given damping β.
 OscillationMeasurement analytic_oscillator(const OscillatorSettings& settings, double damping);
 
-/// Runs the sweep with and without damping; writes oscillator.csv, oscillator.png, run_info.txt.
 /// Throws std::invalid_argument naming the setting that is out of range (damping at or
 /// above critical, a substep count below 1).
 void validate(const OscillatorSettings& settings);
 
+/// Runs the sweep with and without damping; writes oscillator.csv, oscillator.png, run_info.txt.
 void oscillator_study_command(const OscillatorSettings& settings, const std::filesystem::path& folder);
 
 }  // namespace rice::experiments

@@ -20,7 +20,7 @@ struct RgbImage {
   }
 };
 
-/// The PNG file's bytes.
+/// The PNG file's bytes; throws std::runtime_error where libpng fails (an empty image).
 std::string encode_png(const RgbImage& image);
 
 /// Writes `image` to `path` atomically (write_file_atomically); throws std::runtime_error.

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "experiments/gnuplot.hpp"
+#include "experiments/interrupt.hpp"
 #include "experiments/output.hpp"
 #include "grains/water_content.hpp"
 
@@ -102,6 +103,7 @@ plot for [i=1:words(temps)] 'absorption_data.csv' using ($1 == T(i) ? $4 : 1/0):
      for [i=1:words(temps)] 'absorption_curves.csv' using ($1 == T(i) ? log10(60*$2) : 1/0):(-log10($6)) with lines lc i notitle
 unset multiplot
 )");
+  stop_point();  // a Ctrl-C while gnuplot ran (it does not get the signal) stops here
   write_file_atomically(folder / "run_info.txt",
                         run_info({{"figure", "11"},
                                   {"table", table.string()},

@@ -130,6 +130,7 @@ set key left top
 plot for [m in "xpbd-neo-hookean xpbd-springs pbd-springs"] 'stiffness.csv' \
      using 2:(strcol(1) eq m ? 1000*$5 : 1/0) with linespoints title m
 )");
+  stop_point();  // a Ctrl-C while gnuplot ran (it does not get the signal) stops here
   const double total = seconds_since(start);
   write_file_atomically(
       folder / "run_info.txt",

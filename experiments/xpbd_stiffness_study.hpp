@@ -41,11 +41,11 @@ std::vector<StiffnessRun> run_stiffness_study(const StiffnessStudySettings& sett
 /// (max − min) / mean of the tip deflection over the runs of one method.
 double relative_spread(const std::vector<StiffnessRun>& runs, const std::string& method);
 
-/// Runs the study and writes stiffness.csv, stiffness.png and run_info.txt to `folder`;
-/// prints the table and the spreads on stdout.
 /// Throws std::invalid_argument naming the setting that is out of range.
 void validate(const StiffnessStudySettings& settings);
 
+/// Runs the study and writes stiffness.csv, stiffness.png and run_info.txt to `folder`;
+/// prints the table and the spreads on stdout.
 void stiffness_study_command(const StiffnessStudySettings& settings, const std::filesystem::path& folder);
 
 }  // namespace rice::experiments

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cctype>
 #include <charconv>
 #include <climits>
 #include <cmath>
@@ -13,12 +14,12 @@
 #include <cstring>
 #include <fstream>
 #include <istream>
-#include <limits>
 #include <map>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace rice::grains {
@@ -43,20 +44,26 @@ long long bytes_left(std::istream& in, const std::string& name) {
   return static_cast<long long>(end - here);
 }
 
+// True when `count` items of at least `min_item_bytes` each fit in `bytes`.
+bool count_fits(long long count, long long bytes, long long min_item_bytes) {
+  return count >= 0 && count <= bytes / std::max(min_item_bytes, 1LL);
+}
+
 // A declared count must be non-negative and fit in the bytes left at `min_item_bytes` an item.
 void check_count(const std::string& name, const std::string& what, long long count, long long bytes,
                  long long min_item_bytes, long line = 0) {
   if (count < 0) fail(name, what + " count " + std::to_string(count) + " is negative", line);
-  if (count > bytes / std::max(min_item_bytes, 1LL))
+  if (!count_fits(count, bytes, min_item_bytes))
     fail(name,
          what + " count " + std::to_string(count) + " cannot fit in the " + std::to_string(bytes) + " bytes left",
          line);
 }
 
-// A vertex index stored as a number of any type: integral, in [0, INT_MAX].
-int index_value(double value, const std::string& name, const std::string& what) {
+// A vertex index stored as a number of any type: integral, in [0, INT_MAX]. `where` names the
+// face.
+int index_value(double value, const std::string& name, const std::string& where) {
   if (!(value >= 0.0 && value <= INT_MAX) || value != std::floor(value))
-    fail(name, what + " " + std::to_string(value) + " is not a vertex index");
+    fail(name, where + " corner " + std::to_string(value) + " is not a vertex index");
   return static_cast<int>(value);
 }
 
@@ -150,13 +157,25 @@ bool next_off_line(std::istream& in, std::string& line, long& number) {
   return false;
 }
 
+// The OFF keywords this reader reads in full: [ST][C][N]OFF. Each vertex line starts with
+// x y z; texture coordinates (ST), colours (C) and normals (N) follow and are skipped. 4OFF
+// (a fourth, homogeneous coordinate) and nOFF (any dimension) would be misread, so are refused.
+bool is_supported_off_keyword(std::string_view keyword) {
+  for (const std::string_view prefix : {"ST", "C", "N"})
+    if (keyword.starts_with(prefix)) keyword.remove_prefix(prefix.size());
+  return keyword == "OFF";
+}
+
 SurfaceMesh read_off(std::istream& in, const std::string& name) {
   const long long size = bytes_left(in, name);
   long number = 0;
   std::string line, header;
   if (!next_off_line(in, line, number)) fail(name, "missing OFF header");
   std::istringstream words(line);
-  if (!(words >> header) || header.find("OFF") == std::string::npos) fail(name, "missing OFF header", number);
+  if (!(words >> header)) fail(name, "missing OFF header", number);
+  if (!is_supported_off_keyword(header))
+    fail(name, "'" + header + "' is not a supported OFF header (OFF, optionally prefixed by ST, C, N)", number);
+  if (line.find("BINARY") != std::string::npos) fail(name, "binary OFF is not supported", number);
   long long nv = 0, nf = 0;
   if (!(words >> nv >> nf)) {  // the counts may stand on the next line
     if (!next_off_line(in, line, number)) fail(name, "missing vertex and face counts", number);
@@ -188,10 +207,40 @@ SurfaceMesh read_off(std::istream& in, const std::string& name) {
   return builder.finish();
 }
 
+// The PLY scalar types, resolved once from their names in the header: comparing names for
+// every value read would dominate the reading of a large binary file.
+enum class PlyScalar { kNone, kInt8, kUint8, kInt16, kUint16, kInt32, kUint32, kFloat32, kFloat64 };
+
+PlyScalar ply_scalar(const std::string& type) {
+  static const std::map<std::string, PlyScalar> names = {
+      {"char", PlyScalar::kInt8},     {"int8", PlyScalar::kInt8},       {"uchar", PlyScalar::kUint8},
+      {"uint8", PlyScalar::kUint8},   {"short", PlyScalar::kInt16},     {"int16", PlyScalar::kInt16},
+      {"ushort", PlyScalar::kUint16}, {"uint16", PlyScalar::kUint16},   {"int", PlyScalar::kInt32},
+      {"int32", PlyScalar::kInt32},   {"uint", PlyScalar::kUint32},     {"uint32", PlyScalar::kUint32},
+      {"float", PlyScalar::kFloat32}, {"float32", PlyScalar::kFloat32}, {"double", PlyScalar::kFloat64},
+      {"float64", PlyScalar::kFloat64}};
+  const auto it = names.find(type);
+  return it == names.end() ? PlyScalar::kNone : it->second;
+}
+
+int ply_scalar_size(PlyScalar type) {
+  switch (type) {
+    case PlyScalar::kInt8: case PlyScalar::kUint8: return 1;
+    case PlyScalar::kInt16: case PlyScalar::kUint16: return 2;
+    case PlyScalar::kInt32: case PlyScalar::kUint32: case PlyScalar::kFloat32: return 4;
+    case PlyScalar::kFloat64: return 8;
+    case PlyScalar::kNone: break;
+  }
+  return 0;
+}
+
 // PLY: the vertex element's x, y, z and the face element's vertex index list are read;
 // every other property is skipped.
 struct PlyProperty {
-  std::string name, type, count_type;  // count_type non-empty for list properties
+  std::string name;
+  PlyScalar type = PlyScalar::kNone;
+  PlyScalar count_type = PlyScalar::kNone;  ///< a list's length type; kNone for a scalar property
+  bool is_list() const { return count_type != PlyScalar::kNone; }
 };
 struct PlyElement {
   std::string name;
@@ -199,33 +248,23 @@ struct PlyElement {
   std::vector<PlyProperty> properties;
 };
 
-int ply_type_size(const std::string& type) {
-  static const std::map<std::string, int> sizes = {
-      {"char", 1},  {"uchar", 1},  {"int8", 1},   {"uint8", 1},   {"short", 2},   {"ushort", 2},
-      {"int16", 2}, {"uint16", 2}, {"int", 4},    {"uint", 4},    {"int32", 4},   {"uint32", 4},
-      {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
-  const auto it = sizes.find(type);
-  return it == sizes.end() ? 0 : it->second;
-}
-
-bool ply_type_is_integral(const std::string& type) {
-  return ply_type_size(type) > 0 && type.find("float") == std::string::npos && type != "double";
-}
-
-double read_binary_scalar(std::istream& in, const std::string& type) {
+double read_binary_scalar(std::istream& in, PlyScalar type) {
   unsigned char bytes[8] = {};
-  in.read(reinterpret_cast<char*>(bytes), ply_type_size(type));
+  in.read(reinterpret_cast<char*>(bytes), ply_scalar_size(type));
   const auto as = [&](auto value) {
     std::memcpy(&value, bytes, sizeof(value));
     return static_cast<double>(value);
   };
-  if (type == "char" || type == "int8") return as(std::int8_t{});
-  if (type == "uchar" || type == "uint8") return as(std::uint8_t{});
-  if (type == "short" || type == "int16") return as(std::int16_t{});
-  if (type == "ushort" || type == "uint16") return as(std::uint16_t{});
-  if (type == "int" || type == "int32") return as(std::int32_t{});
-  if (type == "uint" || type == "uint32") return as(std::uint32_t{});
-  if (type == "float" || type == "float32") return as(float{});
+  switch (type) {
+    case PlyScalar::kInt8: return as(std::int8_t{});
+    case PlyScalar::kUint8: return as(std::uint8_t{});
+    case PlyScalar::kInt16: return as(std::int16_t{});
+    case PlyScalar::kUint16: return as(std::uint16_t{});
+    case PlyScalar::kInt32: return as(std::int32_t{});
+    case PlyScalar::kUint32: return as(std::uint32_t{});
+    case PlyScalar::kFloat32: return as(float{});
+    case PlyScalar::kFloat64: case PlyScalar::kNone: break;
+  }
   return as(double{});
 }
 
@@ -234,13 +273,20 @@ double read_binary_scalar(std::istream& in, const std::string& type) {
 long long min_item_bytes(const PlyElement& element, bool ascii) {
   long long bytes = 0;
   for (const PlyProperty& p : element.properties)
-    bytes += ascii ? 2 : ply_type_size(p.count_type.empty() ? p.type : p.count_type);
+    bytes += ascii ? 2 : ply_scalar_size(p.is_list() ? p.count_type : p.type);
   return bytes;
 }
 
-std::vector<PlyElement> read_ply_header(std::istream& in, const std::string& name, std::string& format) {
-  std::string line;
+struct PlyHeader {
+  std::string format;
   std::vector<PlyElement> elements;
+  long lines = 0;  ///< lines up to and including end_header
+};
+
+PlyHeader read_ply_header(std::istream& in, const std::string& name) {
+  std::string line;
+  PlyHeader header;
+  std::vector<PlyElement>& elements = header.elements;
   if (!std::getline(in, line) || line.rfind("ply", 0) != 0) fail(name, "missing 'ply' magic", 1);
   for (long number = 2;; ++number) {
     if (!std::getline(in, line)) fail(name, "file ends before end_header", number);
@@ -249,85 +295,129 @@ std::vector<PlyElement> read_ply_header(std::istream& in, const std::string& nam
     std::string tag;
     words >> tag;
     if (tag == "format") {
-      words >> format;
+      words >> header.format;
     } else if (tag == "element") {
       PlyElement element;
       if (!(words >> element.name >> element.count)) fail(name, "an element needs a name and a count", number);
       elements.push_back(element);
     } else if (tag == "property") {
       if (elements.empty()) fail(name, "property before any element", number);
+      std::string type, count_type;
+      words >> type;
+      if (type == "list") words >> count_type >> type;
       PlyProperty property;
-      words >> property.type;
-      if (property.type == "list") words >> property.count_type >> property.type;
       words >> property.name;
-      const bool known = ply_type_size(property.type) > 0 &&
-                         (property.count_type.empty() || ply_type_is_integral(property.count_type));
+      property.type = ply_scalar(type);
+      if (!count_type.empty()) property.count_type = ply_scalar(count_type);
+      const bool float_count =
+          property.count_type == PlyScalar::kFloat32 || property.count_type == PlyScalar::kFloat64;
+      const bool known =
+          property.type != PlyScalar::kNone && (count_type.empty() || (property.is_list() && !float_count));
       if (!known) fail(name, "unknown property type in '" + line + "' (list counts must be integers)", number);
       elements.back().properties.push_back(property);
     } else if (tag == "end_header") {
-      return elements;
+      header.lines = number;
+      return header;
     }
   }
 }
 
+// Names a value of a PLY item in messages: a scalar property, a list's length (entry -1) or
+// one of its entries.
+std::string ply_value_name(const PlyProperty& property, long long entry) {
+  if (!property.is_list()) return "property '" + property.name + "'";
+  if (entry < 0) return "list '" + property.name + "' length";
+  return "list '" + property.name + "' entry " + std::to_string(entry);
+}
+
+// The next word of an ASCII PLY line as a number, `word` its text; fails saying whether the
+// line ended early or which word is not a number. `what()` names the value, and is called
+// only on failure so that reading costs no message text.
+template <class Describe>
+double ascii_number(std::istream& words, std::string& word, const std::string& name, long line,
+                    const Describe& what) {
+  if (!(words >> word)) fail(name, "the line ends before " + what(), line);
+  // from_chars takes no leading '+', which number streams (and PLY writers) may use.
+  const char* begin = word.data() + (word.starts_with('+') && !word.starts_with("+-") ? 1 : 0);
+  const char* end = word.data() + word.size();
+  double value = 0.0;
+  const auto [stop, error] = std::from_chars(begin, end, value);
+  if (error == std::errc::result_out_of_range) fail(name, what() + " '" + word + "' is out of range", line);
+  if (error != std::errc{} || stop != end) fail(name, what() + " '" + word + "' is not a number", line);
+  return value;
+}
+
 SurfaceMesh read_ply(std::istream& in, const std::string& name) {
-  std::string format;
-  const std::vector<PlyElement> elements = read_ply_header(in, name, format);
-  const bool ascii = format == "ascii";
-  if (!ascii && format != "binary_little_endian")
-    fail(name, "PLY format '" + format + "' is not supported (ascii or binary_little_endian)");
-  long long size = bytes_left(in, name);
+  const PlyHeader header = read_ply_header(in, name);
+  const std::vector<PlyElement>& elements = header.elements;
+  const bool ascii = header.format == "ascii";
+  if (!ascii && header.format != "binary_little_endian")
+    fail(name, "PLY format '" + header.format + "' is not supported (ascii or binary_little_endian)");
+  // The input's size is told once: seeking for it per item would discard the stream's buffer
+  // each time. Binary reads then count down what is left.
+  long long left = bytes_left(in, name);
+  long long unclaimed = left;
   for (const PlyElement& element : elements) {
     const long long item_bytes = min_item_bytes(element, ascii);
-    check_count(name, "element '" + element.name + "'", element.count, size, item_bytes);
-    size -= element.count * std::max(item_bytes, 1LL);
+    check_count(name, "element '" + element.name + "'", element.count, unclaimed, item_bytes);
+    unclaimed -= element.count * std::max(item_bytes, 1LL);
   }
 
   MeshBuilder builder(name);
-  std::string line;
+  // Reused from item to item: allocating them anew for each would dominate large files.
+  std::string line, word, where;
+  std::vector<int> corners;
+  long line_number = header.lines;
   for (const PlyElement& element : elements) {
     const bool is_vertex = element.name == "vertex", is_face = element.name == "face";
     const auto has_scalar = [&](const char* property) {
       return std::any_of(element.properties.begin(), element.properties.end(),
-                         [&](const PlyProperty& p) { return p.name == property && p.count_type.empty(); });
+                         [&](const PlyProperty& p) { return p.name == property && !p.is_list(); });
     };
     if (is_vertex && !(has_scalar("x") && has_scalar("y") && has_scalar("z")))
       fail(name, "the vertex element needs scalar properties x, y and z");
     std::istringstream words;
     for (long long item = 0; item < element.count; ++item) {
-      const std::string where = "element '" + element.name + "' " + std::to_string(item);
+      where.assign("element '").append(element.name).append("' ").append(std::to_string(item));
       if (ascii) {
         if (!std::getline(in, line)) fail(name, "file ends before " + where);
+        ++line_number;
         words.clear();
         words.str(line);
       }
-      const auto scalar = [&](const std::string& type) {
-        double value = 0.0;
-        if (ascii ? !(words >> value) : !(value = read_binary_scalar(in, type), in))
-          fail(name, "file ends inside " + where);
+      // Property `property`'s value (entry -1 of a list: its length; k >= 0: its entry k).
+      const auto scalar = [&](const PlyProperty& property, long long entry) {
+        const PlyScalar type = entry < 0 && property.is_list() ? property.count_type : property.type;
+        const auto what = [&] { return where + " " + ply_value_name(property, entry); };
+        if (ascii) return ascii_number(words, word, name, line_number, what);
+        const double value = read_binary_scalar(in, type);
+        if (!in) fail(name, "file ends inside " + what());
+        left -= ply_scalar_size(type);
         return value;
       };
       Vec3 p = Vec3::Zero();
-      std::vector<int> corners;
+      corners.clear();
       for (const PlyProperty& property : element.properties) {
-        if (!property.count_type.empty()) {
-          const long long n = list_length(scalar(property.count_type), name, where);
-          check_count(name, where + " list", n, ascii ? static_cast<long long>(line.size()) : bytes_left(in, name),
-                      ascii ? 2 : ply_type_size(property.type));
+        if (property.is_list()) {
+          const long long n = list_length(scalar(property, -1), name, where);
+          const long long bytes = ascii ? static_cast<long long>(line.size()) : left;
+          const int entry_bytes = ascii ? 2 : ply_scalar_size(property.type);
+          if (!count_fits(n, bytes, entry_bytes))  // checked first: the message costs an allocation
+            check_count(name, where + " list", n, bytes, entry_bytes, ascii ? line_number : 0);
           const bool indices = is_face && (property.name == "vertex_indices" || property.name == "vertex_index");
           for (long long k = 0; k < n; ++k) {
-            const double value = scalar(property.type);
-            if (indices) corners.push_back(index_value(value, name, where + " corner"));
+            const double value = scalar(property, k);
+            if (indices) corners.push_back(index_value(value, name, where));
           }
         } else {
-          const double value = scalar(property.type);
+          const double value = scalar(property, -1);
           if (property.name == "x") p.x() = value;
           if (property.name == "y") p.y() = value;
           if (property.name == "z") p.z() = value;
         }
       }
-      if (is_vertex) builder.add_vertex(p);
-      if (is_face) builder.add_polygon(corners, where);
+      if (is_vertex) builder.add_vertex(p, ascii ? line_number : 0);
+      if (is_face) builder.add_polygon(corners, where, ascii ? line_number : 0);
     }
   }
   return builder.finish();
@@ -395,7 +485,11 @@ VolumeMesh read_medit(std::istream& in, const std::string& name) {
   VolumeMesh mesh;
   bool have_vertices = false, have_tets = false;
   for (std::string word; in >> word && word != "End";) {
-    if (word == "Vertices") {
+    if (word == "Dimension") {
+      std::string dimension;
+      in >> dimension;
+      if (dimension != "3") fail(name, "Dimension '" + dimension + "' is not supported (only 3: tetrahedra in space)");
+    } else if (word == "Vertices") {
       long long n = 0;
       if (have_vertices || !(in >> n)) fail(name, "a second Vertices section, or one without a count");
       check_count(name, "vertex", n, size, 8);  // "0 0 0 0\n"

@@ -1,6 +1,7 @@
-// Reading and writing grain meshes. Surfaces: OBJ, OFF and PLY (ASCII or binary
-// little-endian) in; binary PLY out. Tetrahedral meshes: MEDIT .mesh (ASCII), the format
-// CGAL and most tet tools read. Polygons with more than three corners are split into
+// Reading and writing grain meshes. Surfaces: OBJ, OFF (also COFF, NOFF, STOFF and their
+// combinations; not 4OFF, nOFF or binary OFF) and PLY (ASCII or binary little-endian) in;
+// binary PLY out. Tetrahedral meshes: MEDIT .mesh (ASCII, Dimension 3), the format CGAL and
+// most tet tools read. Polygons with more than three corners are split into
 // triangle fans.
 //
 // Readers take a stream and the name to report (a file name); the path overloads open the

@@ -2,7 +2,7 @@
 // SIGINT (Ctrl-C), leaves only complete, readable files in its output folder (no truncated
 // PLY or MEDIT, no partial CSV row, no half-written PNG, no temporary); Ctrl-C ends the run
 // with exit code 130 and a message saying where it stopped; a rerun into the same folder
-// finishes and writes every file.
+// finishes and writes every file. A run without progress lines names its command instead.
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -171,6 +171,23 @@ TEST(InterruptedRuns, KilledOrInterruptedGrainRunsLeaveOnlyCompleteFilesAndRerun
   EXPECT_EQ(count_files(folder, "_section.png"), 200);
   std::ifstream table(folder / "grains.csv");
   EXPECT_EQ(std::count(std::istreambuf_iterator<char>(table), std::istreambuf_iterator<char>(), '\n'), 201);
+  fs::remove_all(scratch);
+}
+
+// A run that reports no progress (the oscillator study has stop points but no item loop)
+// names its command when interrupted.
+TEST(InterruptedRuns, ARunWithoutProgressNamesItsCommand) {
+  const fs::path scratch = fs::path(RICE_TEST_SCRATCH) / "interrupted-oscillator";
+  const fs::path folder = scratch / "out", log = scratch / "rice.log";
+  fs::remove_all(scratch);
+  fs::create_directories(scratch);
+  // 10000 substeps a frame: seconds of stepping after the output folder appears.
+  const pid_t pid = spawn_rice({"study", "oscillator", "--substeps", "10000", "--out", folder.string()}, log);
+  ASSERT_TRUE(wait_until([&] { return fs::is_directory(folder); }, std::chrono::seconds(60))) << read_bytes(log);
+  kill(pid, SIGINT);
+  EXPECT_EQ(wait_exit(pid), 130) << read_bytes(log);
+  const std::string message = read_bytes(log);
+  EXPECT_NE(message.find("interrupted by SIGINT during study oscillator;"), std::string::npos) << message;
   fs::remove_all(scratch);
 }
 

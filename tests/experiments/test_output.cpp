@@ -1,6 +1,8 @@
 // Output files are written atomically: new content replaces old whole, nothing else is left
-// in the folder, and a failure names the path.
+// in the folder, a folder being prepared loses the temporaries of killed runs, and a failure
+// names the path.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -40,6 +42,35 @@ TEST(Output, AtomicWritesReplaceWholeFilesAndLeaveNothingElse) {
   }
   EXPECT_EQ(files, 3) << "a temporary was left behind";
   fs::remove_all(folder);
+}
+
+// The pid of a process that has ended (and been reaped).
+pid_t ended_process() {
+  const pid_t pid = ::fork();
+  if (pid == 0) ::_exit(0);
+  ::waitpid(pid, nullptr, 0);
+  return pid;
+}
+
+TEST(Output, PreparingAFolderRemovesTemporariesOfKilledRunsOnly) {
+  const fs::path folder = fs::temp_directory_path() / ("rice-stale-" + std::to_string(::getpid()));
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  const std::string dead = ".table.csv.partial-" + std::to_string(ended_process()) + "-3";
+  const std::string live = ".table.csv.partial-" + std::to_string(::getppid()) + "-0";
+  for (const std::string& name : {dead, live, std::string(".notes.partial"), std::string("table.csv")})
+    std::ofstream(folder / name) << "x";
+  make_output_folder(folder);
+  EXPECT_FALSE(fs::exists(folder / dead)) << "a killed run's temporary was kept";
+  EXPECT_TRUE(fs::exists(folder / live)) << "a running process's temporary was removed";
+  EXPECT_TRUE(fs::exists(folder / ".notes.partial"));
+  EXPECT_TRUE(fs::exists(folder / "table.csv"));
+  fs::remove_all(folder);
+}
+
+TEST(Output, AnImageLibpngRefusesIsAnErrorNotACrash) {
+  EXPECT_THROW(encode_png(RgbImage(0, 2)), std::runtime_error);  // libpng: width is zero
+  EXPECT_TRUE(encode_png(RgbImage(1, 1)).starts_with("\x89PNG")) << "the failure left libpng unusable";
 }
 
 TEST(Output, AFailedWriteNamesThePath) {

@@ -1,7 +1,6 @@
 // Fuzz target entries (see fuzz_targets.hpp).
 #include "tests/fuzz/fuzz_targets.hpp"
 
-#include <cmath>
 #include <cstring>
 #include <optional>
 #include <sstream>

@@ -238,5 +238,77 @@ TEST(MeshIo, NonFiniteCoordinatesAndOutOfRangeIndicesAreRefused) {
             std::string::npos);
 }
 
+// A refusal's message: it starts with the input's name, then must contain `part`.
+void expect_refusal(const std::string& message, const std::string& part) {
+  EXPECT_TRUE(message.starts_with("in.mesh")) << message;
+  EXPECT_NE(message.find(part), std::string::npos) << message;
+}
+
+TEST(MeshIo, OnlyOffKeywordsReadInFullAreAccepted) {
+  const std::string body = " 3 1 0\n0 0 0 0.5 0.5 0.5 1\n1 0 0 0.5 0.5 0.5 1\n0 1 0 0.5 0.5 0.5 1\n3 0 1 2\n";
+  for (const char* keyword : {"OFF", "COFF", "NOFF", "CNOFF", "STCNOFF"}) {
+    std::istringstream in(keyword + body);
+    EXPECT_EQ(read_surface_mesh(in, SurfaceFormat::kOff, "in.mesh").V(1, 0), 1.0) << keyword;
+  }
+  // 4OFF's fourth coordinate would be dropped, nOFF's dimension read as a count.
+  expect_refusal(surface_error("4OFF" + body, SurfaceFormat::kOff), ":1: '4OFF' is not a supported OFF header");
+  expect_refusal(surface_error("nOFF\n3" + body, SurfaceFormat::kOff), "'nOFF' is not a supported OFF header");
+  expect_refusal(surface_error("MOFF" + body, SurfaceFormat::kOff), "'MOFF' is not a supported OFF header");
+  expect_refusal(surface_error("OFF BINARY\n", SurfaceFormat::kOff), "binary OFF is not supported");
+}
+
+TEST(MeshIo, MeditOfAnotherDimensionIsRefused) {
+  const std::string tets = "Vertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\nTetrahedra\n1\n1 2 3 4 0\nEnd\n";
+  EXPECT_EQ(read_error("MeshVersionFormatted 2\nDimension 3\n" + tets, [](std::istream& in) { read_medit(in, "in.mesh"); }),
+            "no error");
+  expect_refusal(medit_error("MeshVersionFormatted 2\nDimension 2\n" + tets), "Dimension '2' is not supported");
+  expect_refusal(medit_error("MeshVersionFormatted 2\nDimension\n"), "Dimension '' is not supported");
+}
+
+TEST(MeshIo, AsciiPlyDataErrorsSayWhatIsWrongAndWhere) {
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                             "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  expect_refusal(surface_error(header + "0 0 0\n1 abc 0\n0 1 0\n3 0 1 2\n", SurfaceFormat::kPly),
+                 "in.mesh:11: element 'vertex' 1 property 'y' 'abc' is not a number");
+  expect_refusal(surface_error(header + "0 0 0\n1 0\n0 1 0\n3 0 1 2\n", SurfaceFormat::kPly),
+                 "in.mesh:11: the line ends before element 'vertex' 1 property 'z'");
+  expect_refusal(surface_error(header + "0 0 0\n1 0 0\n0 1 0\n3 0 x 2\n", SurfaceFormat::kPly),
+                 "in.mesh:13: element 'face' 0 list 'vertex_indices' entry 1 'x' is not a number");
+  expect_refusal(surface_error(header + "0 0 0\n1 0 1e999\n0 1 0\n3 0 1 2\n", SurfaceFormat::kPly),
+                 "'1e999' is out of range");
+  EXPECT_EQ(surface_error(header + "+0 0 0\n1 0 -0\n0 1.0 0\n3 0 1 2\n", SurfaceFormat::kPly), "no error");
+}
+
+// A binary PLY whose face declares `corners` int corners, with `corners_present` written.
+std::string binary_triangle_ply(int corners, int corners_present) {
+  std::string bytes = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+                      "property float y\nproperty float z\nelement face 1\n"
+                      "property list uchar int vertex_indices\nend_header\n";
+  const float vertices[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  bytes.append(reinterpret_cast<const char*>(vertices), sizeof vertices);
+  bytes.push_back(static_cast<char>(corners));
+  for (int k = 0; k < corners_present; ++k) {
+    const int corner = k % 3;
+    bytes.append(reinterpret_cast<const char*>(&corner), sizeof corner);
+  }
+  return bytes;
+}
+
+TEST(MeshIo, BinaryPlyListsAreCappedByTheBytesLeftInTheFile) {
+  const auto folder = temporary_folder();
+  std::ofstream(folder / "good.ply", std::ios::binary) << binary_triangle_ply(3, 3);
+  std::ofstream(folder / "long.ply", std::ios::binary) << binary_triangle_ply(255, 3);
+  EXPECT_EQ(read_surface_mesh(folder / "good.ply").F.rows(), 1);
+  try {
+    read_surface_mesh(folder / "long.ply");
+    ADD_FAILURE() << "a list longer than the file was read";
+  } catch (const std::runtime_error& e) {
+    const std::string message = e.what();
+    EXPECT_TRUE(message.starts_with((folder / "long.ply").string())) << message;
+    EXPECT_NE(message.find("list count 255 cannot fit in the 12 bytes left"), std::string::npos) << message;
+  }
+  std::filesystem::remove_all(folder);
+}
+
 }  // namespace
 }  // namespace rice::grains
