@@ -2,47 +2,17 @@
 // tens of tets, so a spatial index would cost more than it saves.
 #include "grains/embedding.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
-#include <array>
 #include <limits>
-#include <map>
 #include <stdexcept>
 #include <vector>
 
-#include <tbb/parallel_for.h>
+#include "grains/mesh_topology.hpp"
 
 namespace rice::grains {
-namespace {
 
-// A boundary face of the mesh (a face used by one tet) and that tet.
-struct BoundaryFace {
-  Eigen::Vector3i corners;
-  int tet;
-};
-
-std::vector<BoundaryFace> boundary_faces(const Tets& T) {
-  constexpr int faces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
-  struct Use {
-    int count = 0;
-    BoundaryFace face;
-  };
-  std::map<std::array<int, 3>, Use> uses;  // keyed by the sorted corners
-  for (int t = 0; t < static_cast<int>(T.rows()); ++t)
-    for (const auto& f : faces) {
-      const Eigen::Vector3i corners(T(t, f[0]), T(t, f[1]), T(t, f[2]));
-      std::array<int, 3> key = {corners[0], corners[1], corners[2]};
-      std::sort(key.begin(), key.end());
-      Use& use = uses[key];
-      ++use.count;
-      use.face = {corners, t};
-    }
-  std::vector<BoundaryFace> boundary;
-  for (const auto& [key, use] : uses)
-    if (use.count == 1) boundary.push_back(use.face);
-  return boundary;
-}
-
-}  // namespace
 
 Eigen::Vector4d barycentric_coordinates(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   Eigen::Matrix3d edges;

@@ -2,6 +2,7 @@
 #include "grains/mesh_topology.hpp"
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <numeric>
 #include <stdexcept>
@@ -100,6 +101,35 @@ int connected_component_count(const SurfaceMesh& mesh) {
   std::vector<bool> is_root(mesh.V.rows(), false);
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) is_root[find(mesh.F(f, 0))] = true;
   return static_cast<int>(std::count(is_root.begin(), is_root.end(), true));
+}
+
+std::vector<BoundaryFace> boundary_faces(const Tets& T) {
+  constexpr int faces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  struct Use {
+    int count = 0;
+    BoundaryFace face;
+  };
+  std::map<std::array<int, 3>, Use> uses;  // keyed by the sorted corners
+  for (int t = 0; t < static_cast<int>(T.rows()); ++t)
+    for (const auto& f : faces) {
+      const Eigen::Vector3i corners(T(t, f[0]), T(t, f[1]), T(t, f[2]));
+      std::array<int, 3> key = {corners[0], corners[1], corners[2]};
+      std::sort(key.begin(), key.end());
+      Use& use = uses[key];
+      ++use.count;
+      use.face = {corners, t};
+    }
+  std::vector<BoundaryFace> boundary;
+  for (const auto& [key, use] : uses)
+    if (use.count == 1) boundary.push_back(use.face);
+  return boundary;
+}
+
+SurfaceMesh boundary_surface(const VolumeMesh& mesh) {
+  const std::vector<BoundaryFace> faces = boundary_faces(mesh.T);
+  SurfaceMesh surface{mesh.V, Triangles(faces.size(), 3)};
+  for (size_t f = 0; f < faces.size(); ++f) surface.F.row(f) = faces[f].corners.transpose();
+  return surface;
 }
 
 }  // namespace rice::grains

@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "grains/mesh_types.hpp"
 
@@ -22,5 +23,16 @@ void require_closed_manifold(const SurfaceMesh& mesh, const std::string& source)
 
 /// Number of connected components (by shared vertices) among the faces.
 int connected_component_count(const SurfaceMesh& mesh);
+
+/// A boundary face of a tet mesh (a face used by one tet), oriented outward for positively
+/// oriented tets, and that tet.
+struct BoundaryFace {
+  Eigen::Vector3i corners;
+  int tet;
+};
+std::vector<BoundaryFace> boundary_faces(const Tets& T);
+
+/// The closed surface bounding a tet mesh: all its vertices, its boundary faces.
+SurfaceMesh boundary_surface(const VolumeMesh& mesh);
 
 }  // namespace rice::grains
