@@ -48,6 +48,7 @@ Cultivar japonica() {
   c.notch_size = 0.10;
   c.swell_min = 1.15;
   c.swell_max = 1.31;
+  c.stickiness = 15.0;
   return c;
 }
 
@@ -66,6 +67,7 @@ Cultivar indica() {
   c.notch_size = 0.08;
   c.swell_min = 1.18;
   c.swell_max = 1.34;
+  c.stickiness = 3.0;
   return c;
 }
 
@@ -84,6 +86,7 @@ Cultivar aromatic() {
   c.notch_size = 0.06;
   c.swell_min = 1.30;
   c.swell_max = 1.46;
+  c.stickiness = 3.0;
   return c;
 }
 
@@ -141,6 +144,8 @@ void validate(const Cultivar& c) {
   require(c.swell_min >= 1.0 && c.swell_min <= c.swell_max && c.swell_max <= 1.5, c, "swell range",
           "1 <= swell_min <= swell_max <= 1.5 (got [" + std::to_string(c.swell_min) + ", " +
               std::to_string(c.swell_max) + "])");
+  require(c.stickiness >= 0.0 && c.stickiness <= 1000.0, c, "stickiness",
+          "in [0, 1000] grain weights (got " + std::to_string(c.stickiness) + ")");
 }
 
 GrainShape sample_grain_shape(const Cultivar& c, RandomStream& random) {

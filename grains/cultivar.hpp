@@ -34,6 +34,11 @@ struct Cultivar {
   double notch_size = 0.0;    ///< embryo notch radius as a fraction of length
   double swell_min = 1.0;     ///< P range of eq. 2, within [1, 1.5]
   double swell_max = 1.0;
+  /// Force to pull two touching cooked grains apart, in grain weights, at the reference soak
+  /// of water_content.hpp: about 15 for sticky cultivars (japonica, glutinous) and 3 for
+  /// non-sticky ones (indica, basmati), after the cohesion index of Peleg (2020),
+  /// "Quantitative instrumental assessment of cooked rice stickiness". ESTIMATE.
+  double stickiness = 0.0;
 };
 
 /// The sampled shape of one grain, cooked dimensions included.

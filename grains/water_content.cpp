@@ -159,6 +159,10 @@ double WaterContentModel::beta(double soak_minutes, double temperature_c) const 
   return reference_.beta * reference_absorption_ / absorption_percent(soak_minutes, temperature_c);
 }
 
+double WaterContentModel::cohesion_ratio(double stickiness, double soak_minutes, double temperature_c) const {
+  return stickiness * absorption_percent(soak_minutes, temperature_c) / reference_absorption_;
+}
+
 double WaterContentModel::scattering_sigma0(double absorption_percent) {
   return (0.2 + 0.4 * absorption_percent / 30.0) * 1e-3;
 }

@@ -15,6 +15,13 @@
 // proportional Rayleigh coefficient expressed as a time (our solvers' `rayleigh_time`, so
 // that each constraint's damping is β/α). β_ref is a PLACEHOLDER the scene work will tune.
 //
+// Cohesion (the paper's water-content constraint): the force to pull two touching grains
+// apart, in grain weights, grows in proportion to the absorbed water,
+//   F / (m g) = S · W(t, T) / W_ref,
+// with S the cultivar's stickiness (cultivar.hpp) at the reference soak, where W = W_ref.
+// Wetter grains carry more gelatinised surface starch, the glue (an ESTIMATE of the law's
+// form; S is calibrated, the proportionality is not).
+//
 // σ0 (eq. 8): a PLACEHOLDER linear map from W to σ0 until the shading work fits it.
 #pragma once
 
@@ -69,6 +76,8 @@ class WaterContentModel {
   double absorption_percent(double soak_minutes, double temperature_c) const;
   /// β of eq. 4 from W: β_ref W_ref / W(t, T) [s].
   double beta(double soak_minutes, double temperature_c) const;
+  /// Pull-off force of two touching grains in grain weights, S W(t, T) / W_ref.
+  double cohesion_ratio(double stickiness, double soak_minutes, double temperature_c) const;
   /// σ0 of eq. 8 [rad·m], PLACEHOLDER: (0.2 + 0.4 W/30) rad·mm, so σ = σ0 κ is 0.13–0.4 rad
   /// on a grain of radius 1.5 mm (wetter grains scatter more).
   static double scattering_sigma0(double absorption_percent);

@@ -31,6 +31,9 @@ struct Body {
   int first_particle = 0;     ///< soft: its particles are [first_particle, first_particle + particle_count)
   int particle_count = 0;
   std::vector<double> radii;  ///< collision sphere radii [m]
+  /// Pull-off force of a cohesive bond to this body [N]; 0: not cohesive
+  /// (cohesion_bonds.hpp). A pair's bond holds up to the smaller of the two.
+  double bond_strength = 0.0;
   /// Rigid: sphere centres in the body frame.
   std::vector<Vec3> local_centres;
   /// Soft: each centre as Σ weights[k] x[anchors[k]] over the corners of the tet holding it.

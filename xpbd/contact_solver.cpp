@@ -40,6 +40,11 @@ ContactSolver::ContactSolver(Model& model) : model_(model) {
   if (!(s.static_friction >= 0.0 && s.dynamic_friction >= 0.0 && s.dynamic_friction <= s.static_friction))
     throw std::invalid_argument("contact: need 0 <= dynamic friction <= static friction between grains");
   if (!(s.margin >= 0.0 && std::isfinite(s.margin))) throw std::invalid_argument("contact: margin must be >= 0");
+  if (!(s.bond_compliance >= 0.0 && std::isfinite(s.bond_compliance)))
+    throw std::invalid_argument("contact: bond compliance must be >= 0");
+  if (!(s.bond_distance >= 0.0 && std::isfinite(s.bond_distance)))
+    throw std::invalid_argument("contact: bond distance must be >= 0");
+  if (s.cohesion) bonds_.emplace();
   has_friction_ = s.static_friction > 0.0;
   for (size_t c = 0; c < model.colliders.size(); ++c) {
     validate(model.colliders[c], static_cast<int>(c));
@@ -98,6 +103,7 @@ void ContactSolver::find_candidates(double time, double dt) {
 
 void ContactSolver::begin_substep(double time, double h, const Positions& x_previous) {
   h_ = h;
+  std::vector<CohesionBonds::Touch> touches;  // filled only when cohesion is on
   pose_start_.clear();
   pose_end_.clear();
   for (const Collider& collider : model_.colliders) {
@@ -131,19 +137,24 @@ void ContactSolver::begin_substep(double time, double h, const Positions& x_prev
       const Vec3 cb_start = previous_point(model_, body_b, sb, cb, x_previous);
       const Vec3 d = ca_start - cb_start;
       const double distance = d.norm();
-      if (distance - ra - body_b.radii[sb] >= (ca - ca_start).norm() + (cb - cb_start).norm() + margin) {
+      const double gap = distance - ra - body_b.radii[sb];
+      if (gap >= (ca - ca_start).norm() + (cb - cb_start).norm() + margin) {
         candidates_[c].anchored = false;
         continue;
       }
       if (distance > 0.0) contact.normal = d / distance;
+      if (bonds_ && gap <= model_.contact.bond_distance)
+        touches.push_back({candidates_[c].key, ca_start - ra * contact.normal, cb_start + body_b.radii[sb] * contact.normal});
     }
     contacts_.push_back(contact);
   }
   statistics_.contacts = static_cast<int>(contacts_.size());
+  if (bonds_) bonds_->begin_substep(model_, touches, x_previous);
 }
 
 void ContactSolver::project(const Positions& x_previous) {
   for (Contact& contact : contacts_) project_normal(contact);
+  if (bonds_) bonds_->project(model_, h_);
   if (!has_friction_) return;  // frictionless scenes pay nothing for it
   for (Contact& contact : contacts_) project_friction(contact, x_previous);
 }
@@ -308,6 +319,13 @@ void ContactSolver::end_substep(bool last_of_step) {
     first = last;
   }
   statistics_.max_penetration = deepest;
+  if (bonds_) update_bonds();
+}
+
+void ContactSolver::update_bonds() {
+  bonds_->end_substep(h_);
+  statistics_.bonds = bonds_->count();
+  statistics_.bonds_broken = bonds_->broken();
 }
 
 }  // namespace rice::xpbd

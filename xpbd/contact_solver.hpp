@@ -18,12 +18,15 @@
 // μ_s Σλ_n (end_substep).
 // Normals are projected for all contacts before friction, so friction sees the sweep's normal
 // impulses. After the velocity update, contacts that pushed lose their relative normal
-// velocity (restitution 0).
+// velocity (restitution 0). Cohesive bonds (cohesion_bonds.hpp) form at touching contacts of
+// sticky bodies and are projected after the normals.
 #pragma once
 
 #include <array>
+#include <optional>
 #include <vector>
 
+#include "xpbd/cohesion_bonds.hpp"
 #include "xpbd/model.hpp"
 
 namespace rice::xpbd {
@@ -32,6 +35,8 @@ struct ContactStatistics {
   int candidates = 0;           ///< sphere pairs and sphere–collider pairs from the broad phase
   int contacts = 0;             ///< speculative contacts of the last substep
   double max_penetration = 0.0;  ///< largest −C over them at the end of the last substep [m]
+  int bonds = 0;                 ///< cohesive bonds holding
+  int bonds_broken = 0;          ///< body pairs whose bonds broke, since the start
 };
 
 class ContactSolver {
@@ -94,6 +99,7 @@ class ContactSolver {
   Vec3 anchored_slip(Candidate& candidate, const ContactPoints& p, const Positions& x_previous) const;
   void project_normal(Contact& contact);
   void project_friction(Contact& contact, const Positions& x_previous);
+  void update_bonds();
 
   Model& model_;
   std::vector<Candidate> candidates_;
@@ -101,6 +107,7 @@ class ContactSolver {
   std::vector<ColliderKeyframe> pose_start_, pose_end_;  ///< collider poses at the substep's ends
   ContactStatistics statistics_;
   bool has_friction_ = false;
+  std::optional<CohesionBonds> bonds_;  ///< only when cohesion is on
   double h_ = 0.0;  ///< the current substep's length
 };
 

@@ -77,6 +77,10 @@ struct ContactSettings {
   /// A sphere pair becomes a contact when its gap is below the distance its spheres can move
   /// in the substep plus this [m].
   double margin = 1e-5;
+  /// Cohesive bonds between bodies with bond_strength > 0 (cohesion_bonds.hpp); off costs nothing.
+  bool cohesion = false;
+  double bond_compliance = 1e-4;  ///< α of a bond [m/N]: 1e-4 stretches 1 µm under 10 mN
+  double bond_distance = 2e-5;    ///< two spheres closer than this [m] form a bond (1% of a grain's thickness)
 };
 
 struct Model {

@@ -7,6 +7,7 @@
 
 #include <unistd.h>
 
+#include "grains/cultivar.hpp"
 #include "grains/water_content.hpp"
 
 namespace rice::grains {
@@ -67,6 +68,18 @@ TEST(WaterContent, ShippedTableFitsAndBehavesPhysically) {
   // Longer soaks: more water, smaller β; σ0 grows with water.
   EXPECT_LT(model.beta(120.0, 10.0), model.beta(30.0, 10.0));
   EXPECT_GT(WaterContentModel::scattering_sigma0(25.0), WaterContentModel::scattering_sigma0(10.0));
+}
+
+TEST(WaterContent, CohesionIsTheStickinessAtTheReferenceSoakAndGrowsWithWater) {
+  const DampingReference reference;
+  const WaterContentModel model(read_absorption_table(default_absorption_table()), reference);
+  const double sticky = cultivar_by_name("japonica").stickiness, plain = cultivar_by_name("indica").stickiness;
+  EXPECT_NEAR(model.cohesion_ratio(sticky, reference.soak_minutes, reference.temperature_c), 15.0, 1e-9);
+  EXPECT_NEAR(model.cohesion_ratio(plain, reference.soak_minutes, reference.temperature_c), 3.0, 1e-9);
+  EXPECT_EQ(cultivar_by_name("glutinous").stickiness, sticky);
+  EXPECT_EQ(cultivar_by_name("aromatic").stickiness, plain);
+  EXPECT_LT(model.cohesion_ratio(sticky, 30.0, 10.0), model.cohesion_ratio(sticky, 120.0, 10.0));
+  EXPECT_LT(model.cohesion_ratio(sticky, 120.0, 10.0), model.cohesion_ratio(sticky, 240.0, 25.0));
 }
 
 TEST(WaterContent, BadTablesAreRefusedWithFileAndLine) {

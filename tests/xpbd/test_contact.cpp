@@ -246,3 +246,47 @@ TEST(BroadPhase, FindsExactlyTheOverlappingPairs) {
 
 }  // namespace
 }  // namespace rice::xpbd
+
+namespace rice::xpbd {
+namespace {
+
+/// A grain hanging under a pinned one, touching it, with bonds of `strength` times its
+/// weight; returns how far it fell in 0.5 s.
+double hanging_drop(BodyKind kind, double strength_over_weight, int* bonds) {
+  Model model;
+  model.contact.cohesion = true;
+  const int top = add_grain(model, BodyKind::kRigid, Vec3(0.0, 0.0, kGrainThickness));
+  model.rigid_bodies[0].inverse_mass = 0.0;  // pinned
+  model.rigid_bodies[0].inverse_inertia.setZero();
+  const int bottom = add_grain(model, kind, Vec3::Zero());
+  const double weight = kGrainDensity * kGrainLength * kGrainWidth * kGrainThickness * 9.81;
+  model.bodies[top].bond_strength = model.bodies[bottom].bond_strength = strength_over_weight * weight;
+  Solver solver(model, scene_settings(kind, 1.0 / 300.0, 10));
+  const double z0 = body_centre(model, bottom).z();
+  for (int k = 0; k < 150; ++k) solver.step();
+  *bonds = solver.contacts()->statistics().bonds;
+  return z0 - body_centre(model, bottom).z();
+}
+
+TEST_P(GrainContact, ABondAboveTheWeightHoldsAHangingGrainAndOneBelowBreaks) {
+  int bonds = 0;
+  EXPECT_LT(hanging_drop(GetParam(), 2.0, &bonds), 0.05 * kGrainThickness);
+  EXPECT_GE(bonds, 3);  // a patch: the grain does not swing
+  EXPECT_GT(hanging_drop(GetParam(), 0.5, &bonds), 0.5);  // free fall: 1.2 m in 0.5 s
+  EXPECT_EQ(bonds, 0);
+}
+
+TEST(GrainContact, CohesionOffFormsNoBonds) {
+  Model model;
+  add_grain(model, BodyKind::kRigid, Vec3::Zero());
+  add_grain(model, BodyKind::kRigid, Vec3(0.0, 0.0, kGrainThickness));
+  for (Body& body : model.bodies) body.bond_strength = 1.0;
+  model.colliders.push_back(half_space(Vec3::UnitZ(), 0.0, 0.5, 0.4));
+  Solver solver(model, scene_settings(BodyKind::kRigid, 1.0 / 300.0, 10));
+  for (int k = 0; k < 10; ++k) solver.step();
+  EXPECT_GT(solver.contacts()->statistics().contacts, 0);
+  EXPECT_EQ(solver.contacts()->statistics().bonds, 0);
+}
+
+}  // namespace
+}  // namespace rice::xpbd

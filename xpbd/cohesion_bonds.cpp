@@ -1,0 +1,76 @@
+// Forming, projecting and breaking cohesive bonds; see cohesion_bonds.hpp.
+#include "xpbd/cohesion_bonds.hpp"
+
+#include <algorithm>
+
+namespace rice::xpbd {
+
+void CohesionBonds::begin_substep(const Model& model, const std::vector<Touch>& touches, const Positions& x_previous) {
+  std::set<std::pair<int, int>> still_touching;
+  for (const Touch& touch : touches) {
+    const auto [a, b, sa, sb] = touch.key;
+    if (broken_pairs_.count({a, b})) {
+      still_touching.emplace(a, b);
+      continue;
+    }
+    const Body& body_a = model.bodies[a];
+    const Body& body_b = model.bodies[b];
+    const double strength = std::min(body_a.bond_strength, body_b.bond_strength);
+    if (!(strength > 0.0) || !bonded_.insert(touch.key).second) continue;
+    bonds_.push_back({touch.key, material_coordinates(model, body_a, sa, touch.pa, &x_previous),
+                      material_coordinates(model, body_b, sb, touch.pb, &x_previous), strength});
+    sorted_ = false;
+  }
+  broken_pairs_ = std::move(still_touching);
+  for (Bond& bond : bonds_) bond.lambda = 0.0;
+}
+
+void CohesionBonds::project(Model& model, double h) {
+  const double alpha_tilde = model.contact.bond_compliance / (h * h);
+  for (Bond& bond : bonds_) {
+    const auto [ia, ib, sa, sb] = bond.key;
+    const Body& a = model.bodies[ia];
+    const Body& b = model.bodies[ib];
+    const Vec3 pa = material_point(model, a, sa, bond.anchor_a);
+    const Vec3 pb = material_point(model, b, sb, bond.anchor_b);
+    const Vec3 d = pa - pb;
+    const double C = d.norm();
+    if (!(C > 0.0)) continue;
+    const Vec3 n = d / C;
+    const double w = inverse_mass_at(model, a, sa, pa, n) + inverse_mass_at(model, b, sb, pb, n);
+    if (!(w + alpha_tilde > 0.0)) continue;
+    // XPBD eq. 18: Δλ = (−C − α̃λ) / (w + α̃), applied as −Δλ along n on a (towards b).
+    const double delta = (-C - alpha_tilde * bond.lambda) / (w + alpha_tilde);
+    bond.lambda += delta;
+    apply_impulse_at(model, a, sa, pa, delta * n);
+    apply_impulse_at(model, b, sb, pb, -delta * n);
+  }
+}
+
+void CohesionBonds::end_substep(double h) {
+  if (!sorted_) {
+    std::sort(bonds_.begin(), bonds_.end(), [](const Bond& x, const Bond& y) { return x.key < y.key; });
+    sorted_ = true;
+  }
+  std::vector<Bond> kept;
+  kept.reserve(bonds_.size());
+  for (size_t first = 0; first < bonds_.size();) {
+    size_t last = first;
+    double force = 0.0;  // Σ|λ|/h² over the pair's bonds
+    for (; last < bonds_.size() && bonds_[last].key[0] == bonds_[first].key[0] &&
+           bonds_[last].key[1] == bonds_[first].key[1];
+         ++last)
+      force += -bonds_[last].lambda / (h * h);
+    if (force <= bonds_[first].strength) {
+      kept.insert(kept.end(), bonds_.begin() + first, bonds_.begin() + last);
+    } else {
+      ++broken_;
+      broken_pairs_.emplace(bonds_[first].key[0], bonds_[first].key[1]);
+      for (size_t k = first; k < last; ++k) bonded_.erase(bonds_[k].key);
+    }
+    first = last;
+  }
+  bonds_ = std::move(kept);
+}
+
+}  // namespace rice::xpbd

@@ -1,0 +1,53 @@
+// Cohesive bonds between sticky grains: the water-content constraint of the paper. A bond
+// forms wherever a sphere of one cohesive body comes within ContactSettings::bond_distance of
+// a sphere of another, and joins two anchors, the material points of either body at that
+// contact, by the compliant constraint C = |A_a − A_b| ≥ 0 with rest length 0: it pulls, the
+// contact pushes. Several bonds over a contact patch also resist rolling and twisting (one
+// bond alone is a ball joint: a grain hung from one swung 2.5 mm down). A body pair's bonds
+// all break when their summed force Σ|λ|/h² exceeds the pair's strength, the smaller of the
+// two bodies' Body::bond_strength, so that strength is the pull-off force of the pair
+// whatever the number of bonds. The strength law lives in grains/water_content.
+#pragma once
+
+#include <array>
+#include <set>
+#include <vector>
+
+#include "xpbd/model.hpp"
+
+namespace rice::xpbd {
+
+class CohesionBonds {
+ public:
+  /// Two spheres within the bond distance at the start of a substep: sphere sa of body a and
+  /// sphere sb of body b, with their contact points pa (on a) and pb (on b) then.
+  struct Touch {
+    std::array<int, 4> key;  ///< (a, b, sa, sb)
+    Vec3 pa, pb;
+  };
+  /// One Gauss–Seidel sweep over the bonds (XPBD eq. 18 with compliance α of the settings).
+  void project(Model& model, double h);
+  /// Starts a substep: bonds every touch that has no bond, unless its body pair broke and has
+  /// not separated since (a pair pulled apart is not glued back before it moves), and resets
+  /// the multipliers. `x_previous`: the particle positions at the substep's start.
+  void begin_substep(const Model& model, const std::vector<Touch>& touches, const Positions& x_previous);
+  /// Breaks the body pairs whose bonds' force over the substep exceeded their strength.
+  void end_substep(double h);
+  int count() const { return static_cast<int>(bonds_.size()); }
+  int broken() const { return broken_; }  ///< body pairs whose bonds broke
+
+ private:
+  struct Bond {
+    std::array<int, 4> key;  ///< (a, b, sa, sb), a < b
+    Vec3 anchor_a, anchor_b;  ///< material coordinates (body.hpp)
+    double strength;          ///< [N]
+    double lambda = 0.0;      ///< this substep's positional impulse [kg m]
+  };
+  std::vector<Bond> bonds_;  ///< sorted by key, so a body pair's bonds are contiguous
+  std::set<std::array<int, 4>> bonded_;
+  std::set<std::pair<int, int>> broken_pairs_;  ///< broken and not yet separated
+  bool sorted_ = true;
+  int broken_ = 0;
+};
+
+}  // namespace rice::xpbd
