@@ -116,6 +116,7 @@ Vec3 previous_point(const Model& model, const Body& body, int s, const Vec3& poi
 }
 
 double inverse_mass_at(const Model& model, const Body& body, int s, const Vec3& point, const Vec3& n) {
+  if (body.asleep) return 0.0;
   if (body.kind == BodyKind::kRigid) {
     const RigidBody& rigid = model.rigid_bodies[body.rigid_body];
     return generalized_inverse_mass(rigid, point - rigid.x, n);
@@ -127,6 +128,7 @@ double inverse_mass_at(const Model& model, const Body& body, int s, const Vec3& 
 }
 
 void apply_impulse_at(Model& model, const Body& body, int s, const Vec3& point, const Vec3& p) {
+  if (body.asleep) return;
   if (body.kind == BodyKind::kRigid) {
     RigidBody& rigid = model.rigid_bodies[body.rigid_body];
     apply_positional_impulse(rigid, point - rigid.x, p);
@@ -165,6 +167,7 @@ Vec3 velocity_at(const Model& model, const Body& body, int s, const Vec3& point)
 }
 
 void apply_velocity_impulse_at(Model& model, const Body& body, int s, const Vec3& point, const Vec3& p) {
+  if (body.asleep) return;
   if (body.kind == BodyKind::kRigid) {
     RigidBody& rigid = model.rigid_bodies[body.rigid_body];
     if (rigid.inverse_mass == 0.0) return;

@@ -34,6 +34,8 @@ struct Body {
   /// Pull-off force of a cohesive bond to this body [N]; 0: not cohesive
   /// (cohesion_bonds.hpp). A pair's bond holds up to the smaller of the two.
   double bond_strength = 0.0;
+  bool asleep = false;  ///< sleeping.hpp: not integrated, infinite mass in contact
+  int quiet_steps = 0;  ///< consecutive steps slower than the sleep speed
   /// Rigid: sphere centres in the body frame.
   std::vector<Vec3> local_centres;
   /// Soft: each centre as Σ weights[k] x[anchors[k]] over the corners of the tet holding it.

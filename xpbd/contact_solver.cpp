@@ -7,6 +7,7 @@
 #include <string>
 
 #include "xpbd/broad_phase.hpp"
+#include "xpbd/sleeping.hpp"
 
 namespace rice::xpbd {
 namespace {
@@ -16,13 +17,15 @@ Vec3 to_local(const ColliderKeyframe& pose, const Vec3& world) {
   return pose.rotation.conjugate() * (world - pose.translation);
 }
 
-/// An upper bound on how far any point of the body moves in dt under its current velocities
-/// and gravity, doubled to leave room for what contacts add during the step.
-double motion_bound(const Model& model, const Body& body, double dt) {
-  const double gravity = 0.5 * model.gravity.norm() * dt * dt;
+/// How far any point of a body can move in `span` seconds, with leeway for what contacts
+/// add: 1.5 (|v| + |ω| r_max) span + ½ |g| span² (soft: the fastest particle). A sleeping
+/// body does not move.
+double motion_bound(const Model& model, const Body& body, double span) {
+  if (body.asleep) return 0.0;
   double speed = 0.0;
   if (body.kind == BodyKind::kRigid) {
     const RigidBody& rigid = model.rigid_bodies[body.rigid_body];
+    if (rigid.inverse_mass == 0.0) return 0.0;
     double reach = 0.0;
     for (const Vec3& c : body.local_centres) reach = std::max(reach, c.norm());
     speed = rigid.v.norm() + rigid.omega.norm() * reach;
@@ -30,7 +33,7 @@ double motion_bound(const Model& model, const Body& body, double dt) {
     for (int i = body.first_particle; i < body.first_particle + body.particle_count; ++i)
       speed = std::max(speed, model.particles.v.row(i).norm());
   }
-  return 2.0 * (speed * dt + gravity);
+  return 1.5 * speed * span + 0.5 * model.gravity.norm() * span * span;
 }
 
 }  // namespace
@@ -45,6 +48,8 @@ ContactSolver::ContactSolver(Model& model) : model_(model) {
   if (!(s.bond_distance >= 0.0 && std::isfinite(s.bond_distance)))
     throw std::invalid_argument("contact: bond distance must be >= 0");
   if (s.cohesion) bonds_.emplace();
+  sphere_offset_.assign(1, 0);
+  for (const Body& body : model.bodies) sphere_offset_.push_back(sphere_offset_.back() + body.sphere_count());
   has_friction_ = s.static_friction > 0.0;
   for (size_t c = 0; c < model.colliders.size(); ++c) {
     validate(model.colliders[c], static_cast<int>(c));
@@ -52,16 +57,14 @@ ContactSolver::ContactSolver(Model& model) : model_(model) {
   }
 }
 
-void ContactSolver::begin_step(double time, double dt) { find_candidates(time, dt); }
-
-void ContactSolver::find_candidates(double time, double dt) {
+void ContactSolver::find_candidates(double time, double span) {
   const auto& bodies = model_.bodies;
   const double margin = model_.contact.margin;
   std::vector<double> pad(bodies.size());
   std::vector<std::vector<Vec3>> centres(bodies.size());
   std::vector<Box> boxes(bodies.size());
   for (size_t b = 0; b < bodies.size(); ++b) {
-    pad[b] = motion_bound(model_, bodies[b], dt) + margin;
+    pad[b] = motion_bound(model_, bodies[b], span) + margin;
     Box box{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
     for (int s = 0; s < bodies[b].sphere_count(); ++s) {
       centres[b].push_back(sphere_centre(model_, bodies[b], s));
@@ -70,23 +73,39 @@ void ContactSolver::find_candidates(double time, double dt) {
     }
     boxes[b] = {box.lower - Vec3::Constant(pad[b]), box.upper + Vec3::Constant(pad[b])};
   }
+  const std::vector<std::pair<int, int>> pairs = overlapping_pairs(boxes);
+  // A body that moved in the last step wakes the sleeping bodies its box reaches.
+  for (const auto& [a, b] : pairs) {
+    Body& body_a = model_.bodies[a];
+    Body& body_b = model_.bodies[b];
+    if (body_a.asleep && !body_b.asleep && body_b.quiet_steps == 0) wake(body_a);
+    if (body_b.asleep && !body_a.asleep && body_a.quiet_steps == 0) wake(body_b);
+  }
   std::vector<Candidate> found;
-  for (const auto& [a, b] : overlapping_pairs(boxes))
+  for (const auto& [a, b] : pairs) {
+    if (bodies[a].asleep && bodies[b].asleep) continue;  // sleeping bodies do not touch each other
+    const double reach = pad[a] + pad[b];
     for (int sa = 0; sa < bodies[a].sphere_count(); ++sa)
       for (int sb = 0; sb < bodies[b].sphere_count(); ++sb) {
         const double gap = (centres[a][sa] - centres[b][sb]).norm() - bodies[a].radii[sa] - bodies[b].radii[sb];
-        if (gap < pad[a] + pad[b]) found.push_back({{a, b, sa, sb}});
+        if (gap < reach) found.push_back({{a, b, sa, sb}});
       }
+  }
   for (size_t c = 0; c < model_.colliders.size(); ++c) {
     const Collider& collider = model_.colliders[c];
-    const ColliderKeyframe start = collider_pose(collider, time), end = collider_pose(collider, time + dt);
-    for (size_t b = 0; b < bodies.size(); ++b)
+    const ColliderKeyframe start = collider_pose(collider, time), end = collider_pose(collider, time + span);
+    const bool moving = start.translation != end.translation || start.rotation.coeffs() != end.rotation.coeffs();
+    for (size_t b = 0; b < bodies.size(); ++b) {
+      if (bodies[b].asleep && !moving) continue;  // a sleeping body rests on a collider at rest
       for (int s = 0; s < bodies[b].sphere_count(); ++s) {
         const Vec3 local = to_local(start, centres[b][s]);
-        const double moved = (to_world(end, local) - centres[b][s]).norm();
-        if (local_signed_distance(collider, local).distance - bodies[b].radii[s] < pad[b] + moved)
+        const double reach = pad[b] + (to_world(end, local) - centres[b][s]).norm();
+        if (local_signed_distance(collider, local).distance - bodies[b].radii[s] < reach) {
           found.push_back({{static_cast<int>(b), collider_key(static_cast<int>(c)), s, 0}});
+          wake(model_.bodies[b]);  // a moving collider reaches it
+        }
       }
+    }
   }
   std::sort(found.begin(), found.end(), [](const Candidate& x, const Candidate& y) { return x.key < y.key; });
   // A pair that stays a candidate keeps its friction state and anchors.
@@ -110,13 +129,24 @@ void ContactSolver::begin_substep(double time, double h, const Positions& x_prev
     pose_start_.push_back(collider_pose(collider, time));
     pose_end_.push_back(collider_pose(collider, time + h));
   }
+  // Every sphere centre now (after prediction) and at the substep's start, once.
+  centre_now_.resize(sphere_offset_.back());
+  centre_start_.resize(sphere_offset_.back());
+  for (size_t b = 0; b < model_.bodies.size(); ++b) {
+    const Body& body = model_.bodies[b];
+    for (int s = 0; s < body.sphere_count(); ++s) {
+      const int k = sphere_offset_[b] + s;
+      centre_now_[k] = sphere_centre(model_, body, s);
+      centre_start_[k] = previous_point(model_, body, s, centre_now_[k], x_previous);
+    }
+  }
   const double margin = model_.contact.margin;
   contacts_.clear();
   for (size_t c = 0; c < candidates_.size(); ++c) {
     const auto [a, b, sa, sb] = candidates_[c].key;
     const Body& body_a = model_.bodies[a];
-    const Vec3 ca = sphere_centre(model_, body_a, sa);
-    const Vec3 ca_start = previous_point(model_, body_a, sa, ca, x_previous);
+    const Vec3& ca = centre_now_[sphere_offset_[a] + sa];
+    const Vec3& ca_start = centre_start_[sphere_offset_[a] + sa];
     const double ra = body_a.radii[sa];
     Contact contact{static_cast<int>(c), Vec3::UnitZ(), Vec3::Zero()};
     if (is_collider(b)) {
@@ -133,8 +163,8 @@ void ContactSolver::begin_substep(double time, double h, const Positions& x_prev
       contact.collider_point = local - sd.distance * sd.normal;
     } else {
       const Body& body_b = model_.bodies[b];
-      const Vec3 cb = sphere_centre(model_, body_b, sb);
-      const Vec3 cb_start = previous_point(model_, body_b, sb, cb, x_previous);
+      const Vec3& cb = centre_now_[sphere_offset_[b] + sb];
+      const Vec3& cb_start = centre_start_[sphere_offset_[b] + sb];
       const Vec3 d = ca_start - cb_start;
       const double distance = d.norm();
       const double gap = distance - ra - body_b.radii[sb];
@@ -276,10 +306,10 @@ void ContactSolver::solve_velocities() {
   }
 }
 
-void ContactSolver::end_substep(bool last_of_step) {
+void ContactSolver::end_substep(bool end_of_interval) {
   // Coulomb's law for a body pair (or a body and a collider) over all its contacts. A sticking
   // pair, whose friction cancelled its slip in full, starts to slide when the net friction
-  // impulse over the step |Σ f_t| exceeded μ_s Σλ_n; summing over the step's substeps keeps
+  // impulse over the broad-phase interval |Σ f_t| exceeded μ_s Σλ_n; summing over substeps keeps
   // the brief excess of a landing (Gauss–Seidel lifts a rigid grain a little too far, and the
   // next substep has less normal impulse) from setting a resting grain sliding. A sliding pair
   // sticks again once one touching contact stopped its slip within μ_k λ_n. Judging the
@@ -310,7 +340,7 @@ void ContactSolver::end_substep(bool last_of_step) {
       stuck = stuck || !contact.capped;
     }
     const bool slides =
-        has_friction_ && touching && (sliding ? !stuck : last_of_step && friction.norm() > mu_s * normal);
+        has_friction_ && touching && (sliding ? !stuck : end_of_interval && friction.norm() > mu_s * normal);
     for (size_t c = first; c < last; ++c) {
       Candidate& candidate = candidates_[contacts_[c].candidate];
       candidate.sliding = slides;

@@ -1,8 +1,9 @@
 // Contact between bodies (body.hpp) and against colliders (collider.hpp) as XPBD inequality
 // constraints with Coulomb friction at position level.
 //
-// Once per step, a broad phase (broad_phase.hpp) over body boxes padded by the distance each
-// body can move in the step gives candidate sphere pairs and sphere–collider pairs. At the
+// Every ContactSettings::broad_phase_interval, a broad phase (broad_phase.hpp) over body boxes
+// padded by the distance each body can move until the next gives candidate sphere pairs and
+// sphere–collider pairs. At the
 // start of every substep each candidate whose gap at the substep's start is smaller than the
 // distance its two sides can move in the substep becomes a contact with a normal n fixed from
 // the start positions (a speculative contact): the half-space constraint
@@ -14,8 +15,8 @@
 // multipliers), capped at μ_k λ_n while the two bodies slide. While they stick, friction
 // instead pulls together two anchors, the material points of either side that touched when
 // sticking began, so that what one Gauss–Seidel sweep leaves over does not add up into creep;
-// they start to slide when the net friction impulse of their contacts over a step exceeds
-// μ_s Σλ_n (end_substep).
+// they start to slide when the net friction impulse of their contacts over a broad-phase
+// interval exceeds μ_s Σλ_n (end_substep).
 // Normals are projected for all contacts before friction, so friction sees the sweep's normal
 // impulses. After the velocity update, contacts that pushed lose their relative normal
 // velocity (restitution 0). Cohesive bonds (cohesion_bonds.hpp) form at touching contacts of
@@ -44,8 +45,9 @@ class ContactSolver {
   /// Validates the colliders and the contact settings (std::invalid_argument).
   explicit ContactSolver(Model& model);
 
-  /// Broad phase for the step [time, time + dt].
-  void begin_step(double time, double dt);
+  /// Broad phase for the interval [time, time + span] of one or more substeps; call before
+  /// their prediction.
+  void find_candidates(double time, double span);
   /// Contacts for the substep [time, time + h]; call after prediction, with the positions at
   /// the substep's start.
   void begin_substep(double time, double h, const Positions& x_previous);
@@ -55,8 +57,9 @@ class ContactSolver {
   /// pushed in this substep (restitution 0).
   void solve_velocities();
   /// Records which body pairs slide, for the next substep's friction coefficient, and the
-  /// statistics; call after the last sweep of a substep.
-  void end_substep(bool last_of_step);
+  /// statistics; call after the last sweep of a substep, saying whether it ends the
+  /// broad-phase interval (where sticking pairs are checked against the friction cone).
+  void end_substep(bool end_of_interval);
 
   const ContactStatistics& statistics() const { return statistics_; }
 
@@ -69,7 +72,7 @@ class ContactSolver {
     bool sliding = false;
     bool anchored = false;  ///< sticking, with anchors (material coordinates on a and b)
     Vec3 anchor_a = Vec3::Zero(), anchor_b = Vec3::Zero();
-    double step_normal = 0.0;             ///< Σλ_n over the step's substeps so far
+    double step_normal = 0.0;             ///< Σλ_n over the interval's substeps so far
     Vec3 step_friction = Vec3::Zero();    ///< Σ friction impulses over them
   };
   static int collider_key(int collider) { return -1 - collider; }
@@ -91,7 +94,6 @@ class ContactSolver {
     Vec3 n, pa, pb, pb_start = Vec3::Zero();
   };
 
-  void find_candidates(double time, double dt);
   ContactPoints locate(const Contact& contact) const;
   double inverse_mass(const Contact& contact, const ContactPoints& p, const Vec3& direction) const;
   void push(const Contact& contact, const ContactPoints& p, const Vec3& impulse);
@@ -103,6 +105,8 @@ class ContactSolver {
 
   Model& model_;
   std::vector<Candidate> candidates_;
+  std::vector<int> sphere_offset_;                ///< first sphere of each body in the arrays below
+  std::vector<Vec3> centre_now_, centre_start_;  ///< sphere centres after prediction and at the substep's start
   std::vector<Contact> contacts_;
   std::vector<ColliderKeyframe> pose_start_, pose_end_;  ///< collider poses at the substep's ends
   ContactStatistics statistics_;

@@ -77,10 +77,21 @@ struct ContactSettings {
   /// A sphere pair becomes a contact when its gap is below the distance its spheres can move
   /// in the substep plus this [m].
   double margin = 1e-5;
+  /// Longest time between two broad phases [s]; the solver runs one every so many substeps.
+  /// Boxes are padded by the distance a body can move in it (½ g t² alone is 0.12 mm at
+  /// 5 ms), so a whole 30 fps frame would make every neighbouring sphere pair a candidate.
+  double broad_phase_interval = 5e-3;
   /// Cohesive bonds between bodies with bond_strength > 0 (cohesion_bonds.hpp); off costs nothing.
   bool cohesion = false;
   double bond_compliance = 1e-4;  ///< α of a bond [m/N]: 1e-4 stretches 1 µm under 10 mN
   double bond_distance = 2e-5;    ///< two spheres closer than this [m] form a bond (1% of a grain's thickness)
+};
+
+/// Sleeping of resting bodies (sleeping.hpp); off costs nothing.
+struct SleepSettings {
+  bool enabled = false;
+  double speed = 2e-3;  ///< a body is quiet in a step when its points move slower [m/s]
+  int steps = 15;       ///< quiet steps before it sleeps
 };
 
 struct Model {
@@ -90,6 +101,7 @@ struct Model {
   std::vector<RigidBody> rigid_bodies;
   std::vector<Collider> colliders;
   ContactSettings contact;
+  SleepSettings sleep;
   std::vector<DistanceConstraint> distances;
   std::vector<TetVolumeConstraint> volumes;
   std::vector<NeoHookeanTet> neo_hookean;

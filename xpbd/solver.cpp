@@ -13,6 +13,7 @@
 #include "xpbd/distance_constraint.hpp"
 #include "xpbd/energy.hpp"
 #include "xpbd/neo_hookean_constraints.hpp"
+#include "xpbd/sleeping.hpp"
 #include "xpbd/tet_volume_constraint.hpp"
 
 namespace rice::xpbd {
@@ -68,13 +69,22 @@ Solver::~Solver() = default;
 
 void Solver::step() {
   const double h = settings_.time_step / settings_.substeps;
-  if (contacts_) contacts_->begin_step(time(), settings_.time_step);
-  for (substep_ = 0; substep_ < settings_.substeps; ++substep_) substep(h);
+  const int broad_phase_every =
+      std::max(1, static_cast<int>(std::floor(model_.contact.broad_phase_interval / h * (1.0 + 1e-9))));
+  for (substep_ = 0; substep_ < settings_.substeps; ++substep_) {
+    if (contacts_ && substep_ % broad_phase_every == 0) {
+      const int span = std::min(broad_phase_every, settings_.substeps - substep_);
+      contacts_->find_candidates(time() + substep_ * h, span * h);
+      if (model_.sleep.enabled) mark_sleeping();  // the broad phase may wake bodies
+    }
+    substep(h, (substep_ + 1) % broad_phase_every == 0 || substep_ + 1 == settings_.substeps);
+  }
   if (settings_.diagnostics) diagnostics_ = measure(h);
+  if (model_.sleep.enabled) update_sleep(model_);
   ++step_;
 }
 
-void Solver::substep(double h) {
+void Solver::substep(double h, bool end_of_interval) {
   x_previous_ = model_.particles.x;
   predict(h);
   lambda_distance_.assign(model_.distances.size(), 0.0);
@@ -93,7 +103,7 @@ void Solver::substep(double h) {
   p.v = (p.x - x_previous_) / h;
   for (RigidBody& body : model_.rigid_bodies) update_velocities(body, h);
   if (contacts_) {
-    contacts_->end_substep(substep_ + 1 == settings_.substeps);
+    contacts_->end_substep(end_of_interval);
     contacts_->solve_velocities();
   }
   check_positions();
@@ -108,12 +118,33 @@ void Solver::predict(double h) {
       p.v.row(i).setZero();
       continue;
     }
+    if (!asleep_particle_.empty() && asleep_particle_[i]) continue;
     Vec3 acceleration = model_.gravity;
     if (has_forces) acceleration += p.w[i] * model_.external_forces.row(i).transpose();
     p.v.row(i) += h * acceleration.transpose();
     p.x.row(i) += h * p.v.row(i);
   }
-  for (RigidBody& body : model_.rigid_bodies) integrate(body, model_.gravity, h);
+  for (size_t r = 0; r < model_.rigid_bodies.size(); ++r) {
+    RigidBody& body = model_.rigid_bodies[r];
+    if (!asleep_rigid_.empty() && asleep_rigid_[r]) {
+      body.x_previous = body.x;
+      body.q_previous = body.q;
+      continue;
+    }
+    integrate(body, model_.gravity, h);
+  }
+}
+
+void Solver::mark_sleeping() {
+  asleep_particle_.assign(model_.particles.size(), 0);
+  asleep_rigid_.assign(model_.rigid_bodies.size(), 0);
+  for (const Body& body : model_.bodies) {
+    if (!body.asleep) continue;
+    if (body.kind == BodyKind::kRigid)
+      asleep_rigid_[body.rigid_body] = 1;
+    else
+      std::fill_n(asleep_particle_.begin() + body.first_particle, body.particle_count, 1);
+  }
 }
 
 template <class Project>
@@ -198,6 +229,7 @@ void Solver::project_neo_hookean(int c, double h) {
   // The deviatoric and hydrostatic constraints of one tet solved jointly (Macklin & Müller
   // 2021 §5): solved one after the other they would fight at rest, where neither is zero.
   const NeoHookeanTet& t = model_.neo_hookean[c];
+  if (!asleep_particle_.empty() && asleep_particle_[t.particles[0]]) return;  // a sleeping body's tet
   Positions& x = model_.particles.x;
   const Eigen::VectorXd& w = model_.particles.w;
   const auto& id = t.particles;

@@ -92,8 +92,12 @@ class Solver {
   const StepDiagnostics& diagnostics() const { return diagnostics_; }
 
  private:
-  void substep(double h);
+  /// `end_of_interval`: the last substep before the next broad phase.
+  void substep(double h, bool end_of_interval);
   void predict(double h);
+  /// Per particle and per rigid body: 1 when its body sleeps (sleeping.hpp); empty when
+  /// sleeping is off.
+  void mark_sleeping();
   void iterate(double h);
   void project_distance(int c, double h);
   void project_volume(int c, double h);
@@ -118,6 +122,7 @@ class Solver {
   std::vector<Eigen::Matrix<double, 3, 4>> impulse_neo_hookean_;
   std::vector<Vec3> lambda_attachment_;
   std::unique_ptr<ContactSolver> contacts_;
+  std::vector<char> asleep_particle_, asleep_rigid_;
   Coloring coloring_distance_, coloring_volume_, coloring_neo_hookean_;
   long step_ = 0;
   int substep_ = 0;
