@@ -467,6 +467,14 @@ void write_ply(std::ostream& out, const SurfaceMesh& mesh) {
   }
 }
 
+void write_obj(std::ostream& out, const SurfaceMesh& mesh) {
+  out.precision(17);
+  for (Eigen::Index v = 0; v < mesh.V.rows(); ++v)
+    out << "v " << mesh.V(v, 0) << ' ' << mesh.V(v, 1) << ' ' << mesh.V(v, 2) << '\n';
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
+    out << "f " << mesh.F(f, 0) + 1 << ' ' << mesh.F(f, 1) + 1 << ' ' << mesh.F(f, 2) + 1 << '\n';
+}
+
 void write_medit(std::ostream& out, const VolumeMesh& mesh) {
   const auto precision = out.precision(17);  // shortest that reads back every double exactly
   out << "MeshVersionFormatted 2\nDimension 3\nVertices\n" << mesh.V.rows() << "\n";

@@ -37,6 +37,9 @@ SurfaceMesh read_surface_mesh(const std::filesystem::path& path);
 /// Writes a binary little-endian PLY with double vertices and int triangle lists.
 void write_ply(std::ostream& out, const SurfaceMesh& mesh);
 
+/// Writes `mesh` as Wavefront OBJ (v and f lines, 1-based indices, 17 significant digits).
+void write_obj(std::ostream& out, const SurfaceMesh& mesh);
+
 /// Writes a MEDIT .mesh (vertices and tetrahedra, reference 0) that read_medit reads back
 /// bit for bit.
 void write_medit(std::ostream& out, const VolumeMesh& mesh);

@@ -57,6 +57,10 @@ SignedDistance local_signed_distance(const Collider& collider, const Vec3& p) {
       const double z = std::clamp(p.z(), -collider.half_length, collider.half_length);
       return sphere_distance(p - Vec3(0.0, 0.0, z), collider.radius);
     }
+    case ColliderShape::kDistanceGrid: {
+      const GridSample s = sample(*collider.grid, p);
+      return {s.distance, s.gradient};
+    }
   }
   throw std::logic_error("local_signed_distance: unknown collider shape");
 }
@@ -68,8 +72,16 @@ void validate(const Collider& c, int index) {
                         (c.shape == ColliderShape::kSphere && positive(c.radius)) ||
                         (c.shape == ColliderShape::kBox && positive(c.half_extents.minCoeff()) &&
                          c.half_extents.allFinite()) ||
-                        (c.shape == ColliderShape::kCapsule && positive(c.radius) && positive(c.half_length));
-  if (!sizes_ok) throw std::invalid_argument(name + ": its sizes must be positive and finite");
+                        (c.shape == ColliderShape::kCapsule && positive(c.radius) && positive(c.half_length)) ||
+                        (c.shape == ColliderShape::kDistanceGrid && c.grid);
+  if (!sizes_ok) throw std::invalid_argument(name + ": its sizes must be positive and finite (a grid must be given)");
+  if (c.shape == ColliderShape::kDistanceGrid) {
+    try {
+      validate(*c.grid);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(name + ": " + e.what());
+    }
+  }
   if (!(c.static_friction >= 0.0 && c.dynamic_friction >= 0.0 && c.dynamic_friction <= c.static_friction))
     throw std::invalid_argument(name + ": need 0 <= dynamic friction <= static friction, got " +
                                 std::to_string(c.dynamic_friction) + " and " + std::to_string(c.static_friction));

@@ -1,10 +1,14 @@
-// Static or kinematic colliders that grains touch: a half-space, a sphere, a box and a capsule,
-// each an analytic signed distance in its own frame, placed in the world by a rigid motion
+// Static or kinematic colliders that grains touch: a half-space, a sphere, a box, a capsule
+// (analytic signed distances) and any closed mesh as a sampled distance field
+// (distance_grid.hpp), each in its own frame, placed in the world by a rigid motion
 // prescribed over time (keyframes). A collider has infinite mass; friction against it uses the
 // displacement of its surface over the substep.
 #pragma once
 
+#include <memory>
 #include <vector>
+
+#include "xpbd/distance_grid.hpp"
 
 #include "xpbd/rigid_body.hpp"
 
@@ -15,6 +19,7 @@ enum class ColliderShape {
   kSphere,     ///< radius about the local origin
   kBox,        ///< half_extents about the local origin
   kCapsule,    ///< radius about the local segment z ∈ [−half_length, half_length]
+  kDistanceGrid,  ///< the sampled field `grid` (a bowl, a plate, a mould, a hand)
 };
 
 /// A pose of the collider's frame at a time: world = translation + rotation · local.
@@ -29,6 +34,7 @@ struct Collider {
   Vec3 half_extents = Vec3::Zero();  ///< box [m]
   double radius = 0.0;               ///< sphere, capsule [m]
   double half_length = 0.0;          ///< capsule [m]
+  std::shared_ptr<const DistanceGrid> grid;  ///< kDistanceGrid (shared: grids are large)
   /// Poses at increasing times, interpolated linearly (translation) and by slerp (rotation),
   /// held constant before the first and after the last. One keyframe: a static collider.
   std::vector<ColliderKeyframe> motion{ColliderKeyframe{}};

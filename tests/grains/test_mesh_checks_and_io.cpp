@@ -132,7 +132,7 @@ TEST(MeshIo, ReadsObjOffAndAsciiPlyWithPolygons) {
   std::filesystem::remove_all(folder);
 }
 
-TEST(MeshIo, BinaryPlyAndMeditRoundTripExactly) {
+TEST(MeshIo, BinaryPlyObjAndMeditRoundTripExactly) {
   SurfaceMesh surface = unit_tetrahedron();
   surface.V *= 1.2345678901234567e-3;
   std::stringstream ply;
@@ -140,6 +140,11 @@ TEST(MeshIo, BinaryPlyAndMeditRoundTripExactly) {
   const SurfaceMesh back = read_surface_mesh(ply, SurfaceFormat::kPly, "t.ply");
   EXPECT_EQ(back.V, surface.V);
   EXPECT_EQ(back.F, surface.F);
+  std::stringstream obj;
+  write_obj(obj, surface);
+  const SurfaceMesh from_obj = read_surface_mesh(obj, SurfaceFormat::kObj, "t.obj");
+  EXPECT_EQ(from_obj.V, surface.V);  // 17 digits read back exactly
+  EXPECT_EQ(from_obj.F, surface.F);
 
   VolumeMesh volume{surface.V, Tets(1, 4)};
   volume.T << 0, 1, 2, 3;

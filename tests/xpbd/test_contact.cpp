@@ -9,6 +9,7 @@
 #include "tests/xpbd/grain_fixtures.hpp"
 #include "xpbd/broad_phase.hpp"
 #include "xpbd/contact_solver.hpp"
+#include "xpbd/distance_grid.hpp"
 #include "xpbd/energy.hpp"
 #include "xpbd/solver.hpp"
 
@@ -286,6 +287,63 @@ TEST(GrainContact, CohesionOffFormsNoBonds) {
   for (int k = 0; k < 10; ++k) solver.step();
   EXPECT_GT(solver.contacts()->statistics().contacts, 0);
   EXPECT_EQ(solver.contacts()->statistics().bonds, 0);
+}
+
+}  // namespace
+}  // namespace rice::xpbd
+
+namespace rice::xpbd {
+namespace {
+
+/// φ(p) = n·p − d sampled on a grid: trilinear interpolation reproduces a linear field.
+DistanceGrid plane_grid(const Vec3& n, double d) {
+  DistanceGrid grid;
+  grid.origin = Vec3(-0.01, -0.02, -0.005);
+  grid.spacing = 0.002;
+  grid.size = Eigen::Vector3i(11, 21, 8);
+  for (int k = 0; k < grid.size.z(); ++k)
+    for (int j = 0; j < grid.size.y(); ++j)
+      for (int i = 0; i < grid.size.x(); ++i)
+        grid.values.push_back(static_cast<float>(n.dot(grid.origin + grid.spacing * Vec3(i, j, k)) - d));
+  return grid;
+}
+
+TEST(DistanceGrid, ReproducesALinearFieldAndItsGradient) {
+  const Vec3 n = Vec3(0.3, -0.5, 0.81).normalized();
+  const DistanceGrid grid = plane_grid(n, 0.001);
+  validate(grid);
+  for (const Vec3& p : {Vec3(0.0031, 0.0107, 0.0009), Vec3(-0.0099, -0.0199, -0.0049), Vec3(0.0, 0.0, 0.0)}) {
+    const GridSample s = sample(grid, p);
+    EXPECT_NEAR(s.distance, n.dot(p) - 0.001, 1e-7);  // float storage
+    EXPECT_LT((s.gradient - n).norm(), 1e-5);
+  }
+  // Beyond the grid: the boundary value plus the distance to the grid.
+  const Vec3 beyond(0.05, 0.0, 0.0);
+  EXPECT_NEAR(sample(grid, beyond).distance, n.dot(Vec3(0.01, 0.0, 0.0)) - 0.001 + 0.04, 1e-6);
+  EXPECT_LT((sample(grid, beyond).gradient - Vec3::UnitX()).norm(), 1e-12);
+}
+
+TEST(DistanceGrid, GradientMatchesFiniteDifferencesOfTheInterpolant) {
+  DistanceGrid grid = plane_grid(Vec3::UnitZ(), 0.0);
+  for (size_t v = 0; v < grid.values.size(); ++v) grid.values[v] += 0.0005f * std::sin(0.7f * v);  // not linear
+  const Vec3 p(0.0013, 0.0041, 0.0007);
+  const GridSample s = sample(grid, p);
+  Vec3 fd;
+  const double e = 1e-7;
+  for (int a = 0; a < 3; ++a) fd[a] = (sample(grid, p + e * Vec3::Unit(a)).distance - sample(grid, p - e * Vec3::Unit(a)).distance) / (2 * e);
+  EXPECT_LT((s.gradient - fd.normalized()).norm(), 1e-6);
+}
+
+TEST(DistanceGrid, BadGridsAreRefused) {
+  DistanceGrid grid = plane_grid(Vec3::UnitZ(), 0.0);
+  grid.values.pop_back();
+  EXPECT_THROW(validate(grid), std::invalid_argument);
+  grid = plane_grid(Vec3::UnitZ(), 0.0);
+  grid.spacing = 0.0;
+  EXPECT_THROW(validate(grid), std::invalid_argument);
+  grid = plane_grid(Vec3::UnitZ(), 0.0);
+  grid.values[3] = NAN;
+  EXPECT_THROW(validate(grid), std::invalid_argument);
 }
 
 }  // namespace
