@@ -143,7 +143,7 @@ void apply_impulse_at(Model& model, const Body& body, int s, const Vec3& point, 
 Vec3 material_coordinates(const Model& model, const Body& body, int s, const Vec3& point, const Positions* x_previous) {
   if (body.kind == BodyKind::kRigid) {
     const RigidBody& rigid = model.rigid_bodies[body.rigid_body];
-    return x_previous ? Vec3(rigid.q_previous.conjugate() * (point - rigid.x_previous)) : rigid.to_local(point);
+    return x_previous ? rigid.to_previous_local(point) : rigid.to_local(point);
   }
   Vec3 centre = Vec3::Zero();
   const Positions& x = x_previous ? *x_previous : model.particles.x;

@@ -28,9 +28,7 @@ double kinetic_energy(const Model& model) {
   double energy = kinetic_energy(model.particles);
   for (const RigidBody& b : model.rigid_bodies) {
     if (b.inverse_mass == 0.0) continue;
-    const Vec3 omega_body = b.q.conjugate() * b.omega;
-    energy += 0.5 * b.v.squaredNorm() / b.inverse_mass +
-              0.5 * omega_body.dot(omega_body.cwiseQuotient(b.inverse_inertia));
+    energy += 0.5 * b.v.squaredNorm() / b.inverse_mass + 0.5 * b.omega.dot(b.angular_momentum());
   }
   return energy;
 }

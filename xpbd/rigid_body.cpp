@@ -10,10 +10,11 @@ namespace rice::xpbd {
 namespace {
 
 /// q += ½ [θ, 0] q, normalised: the first-order rotation of q by the small angle vector θ.
-void rotate(Quat& q, const Vec3& theta) {
+void rotate(RigidBody& body, const Vec3& theta) {
   const Quat dq(0.0, theta.x(), theta.y(), theta.z());
+  Quat q = body.q();
   q.coeffs() += 0.5 * (dq * q).coeffs();
-  q.normalize();
+  body.set_orientation(q);
 }
 
 }  // namespace
@@ -52,30 +53,27 @@ RigidBody make_rigid_body(const Positions& V, const Tets& T, double density) {
   Mat3 R = principal.eigenvectors();
   if (R.determinant() < 0.0) R.col(2) = -R.col(2);
   RigidBody body;
-  body.x = body.x_previous = m.centre;
-  body.q = body.q_previous = Quat(R);
+  body.x = m.centre;
+  body.set_orientation(Quat(R));
+  body.remember_pose();
   body.inverse_mass = 1.0 / m.mass;
   body.inverse_inertia = principal.eigenvalues().cwiseInverse();
   return body;
 }
 
 void integrate(RigidBody& body, const Vec3& gravity, double h) {
-  body.x_previous = body.x;
-  body.q_previous = body.q;
+  body.remember_pose();
   if (body.inverse_mass == 0.0) return;
   body.v += h * gravity;
   body.x += h * body.v;
-  // Iω in the world frame is R (I_b (Rᵀω)).
-  const Vec3 omega_body = body.q.conjugate() * body.omega;
-  const Vec3 angular_momentum = body.q * omega_body.cwiseQuotient(body.inverse_inertia);
-  body.omega += h * body.apply_inverse_inertia(-body.omega.cross(angular_momentum));
-  rotate(body.q, h * body.omega);
+  body.omega += h * body.apply_inverse_inertia(-body.omega.cross(body.angular_momentum()));
+  rotate(body, h * body.omega);
 }
 
 void update_velocities(RigidBody& body, double h) {
   if (body.inverse_mass == 0.0) return;
   body.v = (body.x - body.x_previous) / h;
-  const Quat dq = body.q * body.q_previous.conjugate();
+  const Quat dq = body.q() * body.q_previous().conjugate();
   body.omega = 2.0 / h * dq.vec();
   if (dq.w() < 0.0) body.omega = -body.omega;
 }
@@ -89,7 +87,7 @@ double generalized_inverse_mass(const RigidBody& body, const Vec3& r, const Vec3
 void apply_positional_impulse(RigidBody& body, const Vec3& r, const Vec3& p) {
   if (body.inverse_mass == 0.0) return;
   body.x += body.inverse_mass * p;
-  rotate(body.q, body.apply_inverse_inertia(r.cross(p)));
+  rotate(body, body.apply_inverse_inertia(r.cross(p)));
 }
 
 }  // namespace rice::xpbd

@@ -127,8 +127,7 @@ void Solver::predict(double h) {
   for (size_t r = 0; r < model_.rigid_bodies.size(); ++r) {
     RigidBody& body = model_.rigid_bodies[r];
     if (!asleep_rigid_.empty() && asleep_rigid_[r]) {
-      body.x_previous = body.x;
-      body.q_previous = body.q;
+      body.remember_pose();
       continue;
     }
     integrate(body, model_.gravity, h);
@@ -330,7 +329,7 @@ void Solver::check_positions() const {
                             " has a non-finite position (check its velocity, mass and forces)");
   const auto& rigid = model_.rigid_bodies;
   for (size_t b = 0; b < rigid.size(); ++b)
-    if (!rigid[b].x.allFinite() || !rigid[b].q.coeffs().allFinite())
+    if (!rigid[b].x.allFinite() || !rigid[b].q().coeffs().allFinite())
       throw SimulationError("step " + std::to_string(step_) + ", substep " + std::to_string(substep_) +
                             ": rigid body " + std::to_string(b) + " has a non-finite pose");
 }

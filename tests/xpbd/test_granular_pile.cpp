@@ -33,9 +33,9 @@ Model poured_grains(bool sleeping) {
         const Vec3 corner = centre - 0.5 * Vec3(kGrainLength, kGrainWidth, kGrainThickness);
         const int b = add_grain(model, BodyKind::kRigid, corner);
         RigidBody& rigid = model.rigid_bodies[model.bodies[b].rigid_body];
-        rigid.q = Quat(Eigen::AngleAxisd(0.37 * k, Vec3::UnitZ())) * Quat(Eigen::AngleAxisd(0.2 * std::sin(k), Vec3::UnitX())) * rigid.q;
-        rigid.x_previous = rigid.x;
-        rigid.q_previous = rigid.q;
+        rigid.set_orientation(Quat(Eigen::AngleAxisd(0.37 * k, Vec3::UnitZ())) *
+                              Quat(Eigen::AngleAxisd(0.2 * std::sin(k), Vec3::UnitX())) * rigid.q());
+        rigid.remember_pose();
   }
   return model;
 }
