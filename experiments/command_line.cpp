@@ -19,6 +19,7 @@
 #include "experiments/grain_library.hpp"
 #include "experiments/interrupt.hpp"
 #include "experiments/oscillator_study.hpp"
+#include "experiments/pour_scene.hpp"
 #include "experiments/water_absorption_figure.hpp"
 #include "experiments/xpbd_stiffness_study.hpp"
 #include "grains/cultivar.hpp"
@@ -116,12 +117,64 @@ struct CommandLine::Commands {
   std::uint64_t figure_seed = 1;
   int figure9_count = 20;
 
+  CLI::App* pour_cmd = nullptr;
+  PourSettings pour;
+  std::string pour_out = "out/pour", pour_body = "rigid";
+  bool no_cohesion = false, no_sleep = false;
+
   Commands() {
     app.require_subcommand(1);
     app.add_option("--threads", threads, "worker threads (0: all cores)")->check(number_in(0, 1024));
     add_studies();
     add_grains();
     add_figures();
+    add_pour();
+  }
+
+  void add_pour() {
+    pour_cmd = app.add_subcommand("pour", "grains poured into a chawan: contact, friction, cohesion, sleeping");
+    pour_cmd->add_option("--out", pour_out, "output folder")->capture_default_str();
+    pour_cmd->add_option("--cultivar", pour.cultivar, "japonica, indica, aromatic or glutinous")->capture_default_str();
+    pour_cmd->add_option("--count", pour.count, "grains")->check(number_in(1, 1e5))->capture_default_str();
+    pour_cmd->add_option("--variants", pour.variants, "distinct generated grains, instanced")
+        ->check(number_in(1, 1000))->capture_default_str();
+    pour_cmd->add_option("--body", pour_body, "rigid or soft")->check(CLI::IsMember({"rigid", "soft"}))
+        ->capture_default_str();
+    pour_cmd->add_option("--frames", pour.frames, "frames to simulate")->check(number_in(1, 1e5))->capture_default_str();
+    pour_cmd->add_option("--pour-seconds", pour.pour_seconds, "time over which the grains leave the spout [s]")
+        ->check(number_in(0, 1e4))->capture_default_str();
+    pour_cmd->add_option("--spout-height", pour.spout_height, "spout above the rim [m]")->check(number_in(0, 10))
+        ->capture_default_str();
+    pour_cmd->add_option("--fps", pour.fps, "frames per second")->check(number_in(0, 1000, Ends::kOpenLow))
+        ->capture_default_str();
+    pour_cmd->add_option("--substeps", pour.substeps, "substeps per frame")->check(number_in(1, 1e4))
+        ->capture_default_str();
+    pour_cmd->add_option("--iterations", pour.iterations, "Gauss-Seidel sweeps per substep")
+        ->check(number_in(1, 1000))->capture_default_str();
+    pour_cmd->add_option("--young", pour.young, "soft grains' Young's modulus [Pa]")->check(number_in(1e3, 1e9))
+        ->capture_default_str();
+    pour_cmd->add_option("--soak-minutes", pour.soak_minutes, "soaking time [min]")
+        ->check(number_in(0, 1e5, Ends::kOpenLow))->capture_default_str();
+    pour_cmd->add_option("--soak-temperature", pour.soak_temperature, "soaking water temperature [C]")
+        ->check(number_in(0, 100))->capture_default_str();
+    pour_cmd->add_option("--static-friction", pour.static_friction, "mu_s, grains and bowl")
+        ->check(number_in(0, 10))->capture_default_str();
+    pour_cmd->add_option("--dynamic-friction", pour.dynamic_friction, "mu_k <= mu_s")->check(number_in(0, 10))
+        ->capture_default_str();
+    pour_cmd->add_option("--grid-spacing", pour.grid_spacing, "chawan distance grid [m]")
+        ->check(number_in(2e-4, 1e-2))->capture_default_str();
+    pour_cmd->add_option("--seed", pour.seed, "random seed")->check(seed_value())->capture_default_str();
+    pour_cmd->add_flag("--no-cohesion", no_cohesion, "no water-content bonds between grains");
+    pour_cmd->add_flag("--no-sleep", no_sleep, "resting grains keep being simulated");
+    pour_cmd->add_flag("--render-meshes", pour.render_meshes, "also write each frame's render meshes (PLY, large)");
+  }
+
+  PourSettings pour_settings() const {
+    PourSettings settings = pour;
+    settings.body = pour_body == "soft" ? xpbd::BodyKind::kSoft : xpbd::BodyKind::kRigid;
+    settings.cohesion = !no_cohesion;
+    settings.sleeping = !no_sleep;
+    return settings;
   }
 
   void add_studies() {
@@ -288,6 +341,7 @@ void CommandLine::validate() const {
   if (*c.convergence_cmd) experiments::validate(c.convergence_settings());
   if (*c.grains_cmd) experiments::validate(c.grain_library_settings());
   if (*c.figure11_cmd) experiments::validate(c.absorption);
+  if (*c.pour_cmd) experiments::validate(c.pour_settings());
 }
 
 void CommandLine::run() const {
@@ -299,6 +353,7 @@ void CommandLine::run() const {
   if (*c.figure8_cmd) grain_sizes_figure_command(c.figure_seed, c.figure8_out);
   if (*c.figure9_cmd) cultivars_figure_command(c.figure_seed, c.figure9_count, c.figure9_out);
   if (*c.figure11_cmd) water_absorption_figure_command(c.absorption, c.absorption_out);
+  if (*c.pour_cmd) pour_command(c.pour_settings(), c.pour_out);
 }
 
 int run_command_line(int argc, char** argv) {

@@ -2,7 +2,9 @@
 // SleepSettings::steps consecutive steps sleeps. A sleeping body is not integrated, its tets
 // are not solved, it has infinite mass in contact (body.hpp), and no contacts are made
 // between two sleeping bodies or between a sleeping body and a collider at rest. The contact
-// broad phase wakes it when a moving body's box or a moving collider comes near it.
+// broad phase wakes it when a moving body's box or a moving collider comes near it. A body may
+// also be put to sleep by hand (asleep = true) to park it until a scene releases it; that
+// works with SleepSettings::enabled off too.
 #pragma once
 
 #include "xpbd/model.hpp"

@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "xpbd/contact_solver.hpp"
@@ -67,20 +68,40 @@ Solver::Solver(Model& model, const SolverSettings& settings) : model_(model), se
 
 Solver::~Solver() = default;
 
+namespace {
+
+/// Adds the seconds since `start` to `total` and restarts the clock.
+void lap(double& total, std::chrono::steady_clock::time_point& start) {
+  const auto now = std::chrono::steady_clock::now();
+  total += std::chrono::duration<double>(now - start).count();
+  start = now;
+}
+
+}  // namespace
+
 void Solver::step() {
+  const auto start = std::chrono::steady_clock::now();
   const double h = settings_.time_step / settings_.substeps;
   const int broad_phase_every =
       std::max(1, static_cast<int>(std::floor(model_.contact.broad_phase_interval / h * (1.0 + 1e-9))));
   for (substep_ = 0; substep_ < settings_.substeps; ++substep_) {
     if (contacts_ && substep_ % broad_phase_every == 0) {
+      auto clock = std::chrono::steady_clock::now();
       const int span = std::min(broad_phase_every, settings_.substeps - substep_);
       contacts_->find_candidates(time() + substep_ * h, span * h);
-      if (model_.sleep.enabled) mark_sleeping();  // the broad phase may wake bodies
+      lap(timings_.broad_phase, clock);
+      mark_sleeping();  // the broad phase may wake bodies; a body may also start asleep
+      lap(timings_.sleeping, clock);
     }
     substep(h, (substep_ + 1) % broad_phase_every == 0 || substep_ + 1 == settings_.substeps);
   }
   if (settings_.diagnostics) diagnostics_ = measure(h);
-  if (model_.sleep.enabled) update_sleep(model_);
+  if (model_.sleep.enabled) {
+    auto clock = std::chrono::steady_clock::now();
+    update_sleep(model_);
+    lap(timings_.sleeping, clock);
+  }
+  timings_.total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ++step_;
 }
 
@@ -94,7 +115,11 @@ void Solver::substep(double h, bool end_of_interval) {
     impulse_neo_hookean_.assign(model_.neo_hookean.size(), Eigen::Matrix<double, 3, 4>::Zero());
   lambda_attachment_.assign(model_.attachments.size(), Vec3::Zero());
   if (settings_.diagnostics) x_predicted_ = model_.particles.x;
-  if (contacts_) contacts_->begin_substep(time() + substep_ * h, h, x_previous_);
+  if (contacts_) {
+    auto clock = std::chrono::steady_clock::now();
+    contacts_->begin_substep(time() + substep_ * h, h, x_previous_);
+    lap(timings_.narrow_phase, clock);
+  }
   for (int k = 0; k < settings_.iterations; ++k) {
     iterate(h);
     if (contacts_) contacts_->project(x_previous_);

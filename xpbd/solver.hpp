@@ -73,6 +73,16 @@ class SimulationError : public std::runtime_error {
 
 class ContactSolver;
 
+/// Wall time spent in each part of step() since the solver was built [s]; the rest of
+/// `total` is prediction, constraint and contact solves, and velocity updates.
+struct SolverTimings {
+  double broad_phase = 0.0;   ///< candidate pairs (contact_solver.hpp)
+  double narrow_phase = 0.0;  ///< contacts from candidates, each substep
+  double sleeping = 0.0;      ///< sleep bookkeeping
+  double total = 0.0;
+  double solve() const { return total - broad_phase - narrow_phase - sleeping; }
+};
+
 class Solver {
  public:
   /// Throws std::invalid_argument for settings out of range or a method the model cannot use.
@@ -88,6 +98,7 @@ class Solver {
   double time() const { return step_ * settings_.time_step; }
   /// The contact solver, or null when the model has no bodies and no colliders.
   const ContactSolver* contacts() const { return contacts_.get(); }
+  const SolverTimings& timings() const { return timings_; }
   /// Figures of the last step; computed only when settings().diagnostics is on.
   const StepDiagnostics& diagnostics() const { return diagnostics_; }
 
@@ -123,6 +134,7 @@ class Solver {
   std::vector<Vec3> lambda_attachment_;
   std::unique_ptr<ContactSolver> contacts_;
   std::vector<char> asleep_particle_, asleep_rigid_;
+  SolverTimings timings_;
   Coloring coloring_distance_, coloring_volume_, coloring_neo_hookean_;
   long step_ = 0;
   int substep_ = 0;

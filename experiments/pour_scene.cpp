@@ -1,0 +1,346 @@
+// The pour scene; see pour_scene.hpp.
+#include "experiments/pour_scene.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "experiments/collider_grid.hpp"
+#include "experiments/gnuplot.hpp"
+#include "experiments/interrupt.hpp"
+#include "experiments/item_loop.hpp"
+#include "experiments/output.hpp"
+#include "grains/absorption_table.hpp"
+#include "grains/chawan.hpp"
+#include "grains/collision_spheres.hpp"
+#include "grains/grain_generator.hpp"
+#include "grains/mesh_io.hpp"
+#include "grains/random_stream.hpp"
+#include "grains/tet_quality.hpp"
+#include "grains/water_content.hpp"
+#include "xpbd/contact_solver.hpp"
+#include "xpbd/energy.hpp"
+#include "xpbd/sleeping.hpp"
+#include "xpbd/solver.hpp"
+#include "xpbd/tet_stencil.hpp"
+
+namespace rice::experiments {
+namespace {
+
+using xpbd::Vec3;
+
+struct Variant {
+  grains::Grain grain;
+  grains::CollisionSpheres spheres;
+};
+
+/// Grain frame to world: p ↦ swell · R p + position.
+grains::Vertices place(const grains::Vertices& V, double swell, const Eigen::Quaterniond& rotation, const Vec3& position) {
+  return ((swell * V) * rotation.toRotationMatrix().transpose()).rowwise() + position.transpose();
+}
+
+/// Spout positions: a square lattice of `cell` inside a circle of `radius` at height
+/// `bottom`; grain k goes to point k mod n of layer k / n.
+std::vector<Vec3> spout_positions(int count, double cell, double radius, double bottom, int* per_layer) {
+  std::vector<Vec3> layer;
+  const int n = static_cast<int>(std::floor(radius / cell));
+  for (int i = -n; i <= n; ++i)
+    for (int j = -n; j <= n; ++j)
+      if (std::hypot(i * cell, j * cell) <= radius) layer.emplace_back(i * cell, j * cell, 0.0);
+  if (layer.empty()) throw std::invalid_argument("pour: the bowl is narrower than one grain");
+  std::vector<Vec3> positions;
+  for (int k = 0; k < count; ++k) positions.push_back(layer[k % layer.size()] + Vec3(0.0, 0.0, bottom));
+  *per_layer = static_cast<int>(layer.size());
+  return positions;
+}
+
+/// Bowl outline for the plots: the inside wall's profile r(z) on both sides.
+std::string bowl_outline(const grains::ChawanShape& s) {
+  std::ostringstream out;
+  out << "r,z\n";
+  const double a = s.rim_radius - s.wall_thickness;
+  for (int k = -40; k <= 40; ++k) {
+    const double theta = M_PI / 2 * k / 40.0;
+    out << cell(a * std::sin(theta)) << ',' << cell(s.height - s.inner_depth * std::cos(theta)) << '\n';
+  }
+  return out.str();
+}
+
+}  // namespace
+
+void validate(const PourSettings& s) {
+  // Messages name the settings as `rice pour` spells them.
+  const auto require = [](bool ok, const std::string& what) {
+    if (!ok) throw std::invalid_argument("pour: " + what);
+  };
+  grains::cultivar_by_name(s.cultivar);  // throws, listing the names
+  require(s.count >= 1 && s.count <= 100000, "--count must be in [1, 100000]");
+  require(s.variants >= 1 && s.variants <= 1000, "--variants must be in [1, 1000]");
+  require(s.frames >= 1 && s.frames <= 100000, "--frames must be in [1, 100000]");
+  require(s.fps > 0.0 && s.fps <= 1000.0, "--fps must be in (0, 1000]");
+  require(s.substeps >= 1 && s.substeps <= 10000, "--substeps must be in [1, 10000]");
+  require(s.iterations >= 1 && s.iterations <= 1000, "--iterations must be in [1, 1000]");
+  require(s.young >= 1e3 && s.young <= 1e9, "--young must be in [1e3, 1e9] Pa");
+  require(s.poisson > -1.0 && s.poisson < 0.5, "Poisson's ratio must be in (-1, 0.5)");
+  require(s.soak_minutes > 0.0 && s.soak_minutes <= 1e5, "--soak-minutes must be in (0, 1e5]");
+  require(s.soak_temperature >= 0.0 && s.soak_temperature <= 100.0, "--soak-temperature must be in [0, 100] C");
+  require(s.static_friction >= 0.0 && s.static_friction <= 10.0 && s.dynamic_friction >= 0.0 &&
+              s.dynamic_friction <= s.static_friction,
+          "need 0 <= --dynamic-friction <= --static-friction <= 10, got " + cell(s.dynamic_friction) + " and " +
+              cell(s.static_friction));
+  require(s.grid_spacing >= 2e-4 && s.grid_spacing <= 1e-2, "--grid-spacing must be in [2e-4, 1e-2] m");
+  require(s.pour_seconds >= 0.0 && s.pour_seconds <= 1e4, "--pour-seconds must be in [0, 1e4]");
+  require(s.spout_height >= 0.0 && s.spout_height <= 10.0, "--spout-height must be in [0, 10] m");
+}
+
+void pour_command(const PourSettings& settings, const std::filesystem::path& folder) {
+  validate(settings);
+  const auto start = std::chrono::steady_clock::now();
+  make_output_folder(folder);
+  make_output_folder(folder / "frames");
+
+  // The bowl.
+  const grains::ChawanShape bowl_shape;
+  const grains::SurfaceMesh bowl = grains::make_chawan(bowl_shape);
+  write_file_atomically(folder / "chawan.obj", [&](std::ostream& out) { grains::write_obj(out, bowl); });
+  write_file_atomically(folder / "bowl_outline.csv", bowl_outline(bowl_shape));
+
+  // Grains: variants, their spheres, then instances placed on a lattice above the bowl.
+  grains::GrainRecipe recipe;
+  recipe.cultivar = grains::cultivar_by_name(settings.cultivar);
+  grains::RandomStream random(settings.seed);
+  std::vector<std::uint64_t> seeds(settings.variants);
+  for (std::uint64_t& seed : seeds) seed = random.child_seed();
+  std::vector<Variant> variants(settings.variants);
+  for_each_item("grain variants", settings.variants, [&](int i) {
+    variants[i].grain = grains::make_grain(recipe, seeds[i], 1.0);
+    variants[i].spheres = grains::fit_collision_spheres(variants[i].grain.simulation);
+  });
+  const auto instances = grains::make_instances(settings.count, settings.variants, recipe.cultivar, random);
+  double longest = 0.0;
+  for (const Variant& v : variants)
+    longest = std::max(longest, (v.grain.simulation.V.colwise().maxCoeff() - v.grain.simulation.V.colwise().minCoeff()).norm());
+  longest *= recipe.cultivar.swell_max;
+  const double inner_radius = bowl_shape.rim_radius - bowl_shape.wall_thickness;
+  int per_layer = 0;
+  const std::vector<Vec3> drops = spout_positions(settings.count, 1.05 * longest, 0.6 * inner_radius - longest,
+                                                  bowl_shape.height + settings.spout_height, &per_layer);
+  const int layers = (settings.count + per_layer - 1) / per_layer;
+  // Parked layers wait 2 m apart along x, far from the bowl and from each other.
+  const auto parking = [&](int g) { return Vec3(2.0 * (1 + g / per_layer), 0.0, 0.0); };
+
+  const grains::WaterContentModel water(grains::read_absorption_table(grains::default_absorption_table()));
+  const double cohesion_ratio =
+      water.cohesion_ratio(recipe.cultivar.stickiness, settings.soak_minutes, settings.soak_temperature);
+  const double rayleigh_time = water.beta(settings.soak_minutes, settings.soak_temperature);
+  const auto material = xpbd::lame_from_young_poisson(settings.young, settings.poisson);
+
+  xpbd::Model model;
+  model.contact.static_friction = settings.static_friction;
+  model.contact.dynamic_friction = settings.dynamic_friction;
+  model.contact.cohesion = settings.cohesion;
+  model.sleep.enabled = settings.sleeping;
+  std::vector<Vec3> initial_centre(settings.count);
+  for (int g = 0; g < settings.count; ++g) {
+    const Variant& variant = variants[instances[g].variant];
+    const double P = instances[g].swell;
+    const Eigen::Quaterniond& R = instances[g].rotation;
+    const Vec3 parked = drops[g] + parking(g);
+    const xpbd::TetMesh mesh{place(variant.grain.simulation.V, P, R, parked), variant.grain.simulation.T};
+    const xpbd::SphereSet spheres{place(variant.spheres.centres, P, R, parked), P * variant.spheres.radii};
+    const double density = variant.grain.simulation_density;
+    const int b = settings.body == xpbd::BodyKind::kRigid
+                      ? xpbd::add_rigid_body(model, mesh, density, spheres)
+                      : xpbd::add_soft_body(model, mesh, density, material, rayleigh_time, spheres);
+    const double mass = density * grains::total_volume({mesh.V, mesh.T});
+    model.bodies[b].bond_strength = settings.cohesion ? cohesion_ratio * mass * model.gravity.norm() : 0.0;
+    model.bodies[b].asleep = true;  // parked until its layer leaves the spout
+  }
+  const auto centre_of = [&](int g) -> Vec3 {
+    const xpbd::Body& body = model.bodies[g];
+    if (body.kind == xpbd::BodyKind::kRigid) return model.rigid_bodies[body.rigid_body].x;
+    return model.particles.x.middleRows(body.first_particle, body.particle_count).colwise().mean().transpose();
+  };
+  for (int g = 0; g < settings.count; ++g) initial_centre[g] = centre_of(g) - parking(g);
+  // Moves a parked grain to the spout and wakes it.
+  const auto release = [&](int g) {
+    xpbd::Body& body = model.bodies[g];
+    if (body.kind == xpbd::BodyKind::kRigid) {
+      xpbd::RigidBody& rigid = model.rigid_bodies[body.rigid_body];
+      rigid.x -= parking(g);
+      rigid.remember_pose();
+    } else {
+      model.particles.x.middleRows(body.first_particle, body.particle_count).rowwise() -= parking(g).transpose();
+    }
+    xpbd::wake(body);
+  };
+  int released = 0;
+  std::vector<xpbd::Quat> initial_orientation;
+  for (const xpbd::RigidBody& rigid : model.rigid_bodies) initial_orientation.push_back(rigid.q());
+
+  xpbd::Collider chawan;
+  chawan.shape = xpbd::ColliderShape::kDistanceGrid;
+  chawan.grid = std::make_shared<const xpbd::DistanceGrid>(distance_grid_of(bowl, settings.grid_spacing, 0.01));
+  chawan.static_friction = settings.static_friction;
+  chawan.dynamic_friction = settings.dynamic_friction;
+  model.colliders.push_back(chawan);
+  const double setup_seconds = seconds_since(start);
+
+  xpbd::SolverSettings solver_settings;
+  solver_settings.time_step = 1.0 / settings.fps;
+  solver_settings.substeps = settings.substeps;
+  solver_settings.iterations = settings.iterations;
+  xpbd::Solver solver(model, solver_settings);
+
+  CsvTable stats({"frame", "time_s", "wall_s", "awake", "candidates", "contacts", "bonds", "max_penetration_m", "kinetic_energy_j",
+                  "broad_phase_s", "narrow_phase_s", "solve_s", "sleeping_s"});
+  Progress progress("pour frames", settings.frames);
+  const auto simulation_start = std::chrono::steady_clock::now();
+  for (int frame = 1; frame <= settings.frames; ++frame) {
+    const auto frame_start = std::chrono::steady_clock::now();
+    const int due = std::min(settings.count,
+                             per_layer * (1 + static_cast<int>(std::floor(solver.time() / settings.pour_seconds * layers))));
+    for (; released < due; ++released) release(released);
+    solver.step();
+    const double wall = seconds_since(frame_start);
+    const xpbd::ContactStatistics& contact = solver.contacts()->statistics();
+    const xpbd::SolverTimings& t = solver.timings();
+    const long awake = std::count_if(model.bodies.begin(), model.bodies.end(), [](const xpbd::Body& b) { return !b.asleep; });
+    stats.add_row({cell(frame), cell(solver.time()), cell(wall), cell(awake), cell(contact.candidates),
+                   cell(contact.contacts), cell(contact.bonds),
+                   cell(contact.max_penetration), cell(xpbd::kinetic_energy(model)), cell(t.broad_phase),
+                   cell(t.narrow_phase), cell(t.solve()), cell(t.sleeping)});
+    // Per frame: each grain's motion since the start, world = q (p₀ − c₀) + c (rigid), or its
+    // simulation vertices (soft).
+    CsvTable poses(settings.body == xpbd::BodyKind::kRigid
+                       ? std::vector<std::string>{"grain", "x", "y", "z", "qw", "qx", "qy", "qz"}
+                       : std::vector<std::string>{"grain", "vertex", "x", "y", "z"});
+    for (int g = 0; g < settings.count; ++g) {
+      const xpbd::Body& body = model.bodies[g];
+      if (body.kind == xpbd::BodyKind::kRigid) {
+        const xpbd::RigidBody& rigid = model.rigid_bodies[body.rigid_body];
+        const xpbd::Quat q = rigid.q() * initial_orientation[body.rigid_body].conjugate();
+        poses.add_row({cell(g), cell(rigid.x.x()), cell(rigid.x.y()), cell(rigid.x.z()), cell(q.w()), cell(q.x()),
+                       cell(q.y()), cell(q.z())});
+      } else {
+        for (int v = 0; v < body.particle_count; ++v) {
+          const auto x = model.particles.x.row(body.first_particle + v);
+          poses.add_row({cell(g), cell(v), cell(x(0)), cell(x(1)), cell(x(2))});
+        }
+      }
+    }
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d", frame);
+    write_file_atomically(folder / "frames" / (std::string(name) + ".csv"), poses.text());
+    if (settings.render_meshes) {
+      // Every grain's render mesh through its embedding, merged into one PLY.
+      grains::SurfaceMesh merged;
+      std::vector<grains::Vertices> parts;
+      std::vector<grains::Triangles> faces;
+      long vertex_count = 0, face_count = 0;
+      for (int g = 0; g < settings.count; ++g) {
+        const Variant& variant = variants[instances[g].variant];
+        const xpbd::Body& body = model.bodies[g];
+        grains::Vertices simulation;
+        if (body.kind == xpbd::BodyKind::kRigid) {
+          const xpbd::RigidBody& rigid = model.rigid_bodies[body.rigid_body];
+          const grains::Vertices rest = place(variant.grain.simulation.V, instances[g].swell, instances[g].rotation, drops[g]);
+          const xpbd::Quat q = rigid.q() * initial_orientation[body.rigid_body].conjugate();
+          simulation = ((rest.rowwise() - initial_centre[g].transpose()) * q.toRotationMatrix().transpose()).rowwise() +
+                       rigid.x.transpose();
+        } else {
+          simulation = model.particles.x.middleRows(body.first_particle, body.particle_count);
+        }
+        parts.push_back(grains::apply_embedding(variant.grain.embedding, simulation, variant.grain.simulation.T));
+        faces.push_back(variant.grain.render.F.array() + static_cast<int>(vertex_count));
+        vertex_count += parts.back().rows();
+        face_count += faces.back().rows();
+      }
+      merged.V.resize(vertex_count, 3);
+      merged.F.resize(face_count, 3);
+      for (size_t k = 0, v = 0, f = 0; k < parts.size(); v += parts[k].rows(), f += faces[k].rows(), ++k) {
+        merged.V.middleRows(v, parts[k].rows()) = parts[k];
+        merged.F.middleRows(f, faces[k].rows()) = faces[k];
+      }
+      write_file_atomically(folder / "frames" / (std::string(name) + ".ply"),
+                            [&](std::ostream& out) { grains::write_ply(out, merged); });
+    }
+    progress.update(frame);
+    stop_point();
+  }
+  progress.finish();
+  const double simulation_seconds = seconds_since(simulation_start);
+  write_file_atomically(folder / "stats.csv", stats.text());
+
+  CsvTable final_centres({"grain", "x", "y", "z", "r"});
+  for (int g = 0; g < settings.count; ++g) {
+    const Vec3 c = centre_of(g);
+    final_centres.add_row({cell(g), cell(c.x()), cell(c.y()), cell(c.z()), cell(std::hypot(c.x(), c.y()))});
+  }
+  write_file_atomically(folder / "final_centres.csv", final_centres.text());
+  render_plot(folder, "pile", R"(set terminal pngcairo size 1200,560
+set output 'pile.png'
+set datafile separator ','
+set multiplot layout 1,2
+set size ratio -1
+set xlabel 'x [m]'
+set ylabel 'y [m]'
+set title 'The pile from the top (grain centres; the rim)'
+set parametric
+plot [0:2*pi] )" + cell(bowl_shape.rim_radius) + "*cos(t), " + cell(bowl_shape.rim_radius) +
+                                     R"(*sin(t) with lines lc rgb 'gray' notitle, \
+     'final_centres.csv' using 2:3 with points pt 7 ps 0.5 notitle
+unset parametric
+set xlabel 'x [m]'
+set ylabel 'z [m]'
+set title 'The pile from the side (grain centres; the inside wall)'
+plot 'bowl_outline.csv' using 1:2 with lines lc rgb 'gray' notitle, \
+     'final_centres.csv' using 2:4 with points pt 7 ps 0.5 notitle
+unset multiplot
+)");
+  stop_point();
+
+  const xpbd::SolverTimings& t = solver.timings();
+  std::cout << "rice pour: " << settings.count << (settings.body == xpbd::BodyKind::kRigid ? " rigid" : " soft")
+            << " grains, " << settings.frames << " frames in " << simulation_seconds << " s (broad phase "
+            << t.broad_phase << " s, narrow phase " << t.narrow_phase << " s, solves " << t.solve() << " s, sleeping "
+            << t.sleeping << " s); set-up " << setup_seconds << " s\n";
+  write_file_atomically(
+      folder / "run_info.txt",
+      run_info({{"command", "pour"},
+                {"cultivar", settings.cultivar},
+                {"count", cell(settings.count)},
+                {"variants", cell(settings.variants)},
+                {"body", settings.body == xpbd::BodyKind::kRigid ? "rigid" : "soft"},
+                {"frames", cell(settings.frames)},
+                {"pour_seconds", cell(settings.pour_seconds)},
+                {"spout_height_m", cell(settings.spout_height)},
+                {"grains_per_layer", cell(per_layer)},
+                {"fps", cell(settings.fps)},
+                {"substeps", cell(settings.substeps)},
+                {"iterations", cell(settings.iterations)},
+                {"young_pa", cell(settings.young)},
+                {"rayleigh_time_s", cell(rayleigh_time)},
+                {"cohesion", settings.cohesion ? "on" : "off"},
+                {"pull_off_force_in_weights", cell(cohesion_ratio)},
+                {"sleeping", settings.sleeping ? "on" : "off"},
+                {"static_friction", cell(settings.static_friction)},
+                {"dynamic_friction", cell(settings.dynamic_friction)},
+                {"seed", std::to_string(settings.seed)},
+                {"setup_wall_s", cell(setup_seconds)},
+                {"simulation_wall_s", cell(simulation_seconds)},
+                {"broad_phase_s", cell(t.broad_phase)},
+                {"narrow_phase_s", cell(t.narrow_phase)},
+                {"solve_s", cell(t.solve())},
+                {"sleeping_s", cell(t.sleeping)},
+                {"frame_poses", settings.body == xpbd::BodyKind::kRigid
+                                    ? "world = q (p0 - c0) + (x, y, z); c0 the grain's first centre"
+                                    : "simulation vertices"},
+                {"wall_s", cell(seconds_since(start))}}));
+}
+
+}  // namespace rice::experiments
