@@ -204,6 +204,8 @@ void ContactSolver::begin_substep(double time, double h, const Positions& x_prev
 }
 
 void ContactSolver::project(const Positions& x_previous) {
+  // Bonds after the normals: projected first, they left deeper penetrations in a sticky pile
+  // (1.6 mm against 1.1 mm, 800 grains) and kept it moving (6e-6 J against 2e-7 J).
   for (Contact& contact : contacts_) project_normal(contact);
   if (bonds_) bonds_->project(model_, h_);
   if (!has_friction_) return;  // frictionless scenes pay nothing for it

@@ -3,8 +3,7 @@
 //
 // Every ContactSettings::broad_phase_interval, a broad phase (broad_phase.hpp) over body boxes
 // padded by the distance each body can move until the next gives candidate sphere pairs and
-// sphere–collider pairs. At the
-// start of every substep each candidate whose gap at the substep's start is smaller than the
+// sphere–collider pairs. At the start of every substep each candidate whose gap at the substep's start is smaller than the
 // distance its two sides can move in the substep becomes a contact with a normal n fixed from
 // the start positions (a speculative contact): the half-space constraint
 //   C = n·(c_a − c_b) − (r_a + r_b) ≥ 0   (against a collider: C = n·(c_a − q) − r_a ≥ 0)
