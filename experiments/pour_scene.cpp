@@ -26,7 +26,6 @@
 #include "xpbd/energy.hpp"
 #include "xpbd/sleeping.hpp"
 #include "xpbd/solver.hpp"
-#include "xpbd/tet_stencil.hpp"
 
 namespace rice::experiments {
 namespace {
