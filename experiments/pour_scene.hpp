@@ -27,7 +27,9 @@ struct PourSettings {
   double pour_seconds = 1.5;
   double spout_height = 0.02;  ///< [m]
   double fps = 30.0;
-  int substeps = 20;
+  /// 80 keeps the resting pile's penetrations under 5% of a grain's thickness (measured: 20
+  /// left 29%, 40 left 6.5%; README "Known limits").
+  int substeps = 80;
   int iterations = 1;
   double young = 1e5;  ///< soft grains [Pa]: cooked rice kernels are soft (0.1–1 MPa; ESTIMATE)
   double poisson = 0.3;
