@@ -36,6 +36,7 @@ struct Body {
   double bond_strength = 0.0;
   bool asleep = false;  ///< sleeping.hpp: not integrated, infinite mass in contact
   int quiet_steps = 0;  ///< consecutive steps slower than the sleep speed
+  bool moving = false;  ///< faster than the sleep speed over the last step (it wakes neighbours)
   /// Rigid: sphere centres in the body frame.
   std::vector<Vec3> local_centres;
   /// Soft: each centre as Σ weights[k] x[anchors[k]] over the corners of the tet holding it.

@@ -80,8 +80,8 @@ void ContactSolver::find_candidates(double time, double span) {
   for (const auto& [a, b] : pairs) {
     Body& body_a = model_.bodies[a];
     Body& body_b = model_.bodies[b];
-    if (body_a.asleep && !body_b.asleep && body_b.quiet_steps == 0) wake(body_a);
-    if (body_b.asleep && !body_a.asleep && body_a.quiet_steps == 0) wake(body_b);
+    if (body_a.asleep && !body_b.asleep && body_b.moving) wake(body_a);
+    if (body_b.asleep && !body_a.asleep && body_a.moving) wake(body_b);
   }
   // Sphere pairs. Only spheres that reach the other body's box are paired (a grain's 20–60
   // spheres make 400–3600 pairs, of which a touching neighbour needs a few dozen). Pairs come

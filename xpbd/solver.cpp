@@ -82,6 +82,12 @@ void lap(double& total, std::chrono::steady_clock::time_point& start) {
 void Solver::step() {
   const auto start = std::chrono::steady_clock::now();
   const double h = settings_.time_step / settings_.substeps;
+  StepStart step_start;
+  if (model_.sleep.enabled) {
+    auto clock = std::chrono::steady_clock::now();
+    step_start = record_step_start(model_);
+    lap(timings_.sleeping, clock);
+  }
   const int broad_phase_every =
       std::max(1, static_cast<int>(std::floor(model_.contact.broad_phase_interval / h * (1.0 + 1e-9))));
   for (substep_ = 0; substep_ < settings_.substeps; ++substep_) {
@@ -98,7 +104,7 @@ void Solver::step() {
   if (settings_.diagnostics) diagnostics_ = measure(h);
   if (model_.sleep.enabled) {
     auto clock = std::chrono::steady_clock::now();
-    update_sleep(model_);
+    update_sleep(model_, step_start, settings_.time_step);
     lap(timings_.sleeping, clock);
   }
   timings_.total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
