@@ -57,6 +57,46 @@ std::vector<Vec3> spout_positions(int count, double cell, double radius, double 
   return positions;
 }
 
+/// One mesh holding all of `parts`, faces renumbered.
+grains::SurfaceMesh merged(const std::vector<grains::SurfaceMesh>& parts) {
+  grains::SurfaceMesh all;
+  Eigen::Index vertices = 0, faces = 0;
+  for (const grains::SurfaceMesh& part : parts) vertices += part.V.rows(), faces += part.F.rows();
+  all.V.resize(vertices, 3);
+  all.F.resize(faces, 3);
+  Eigen::Index v = 0, f = 0;
+  for (const grains::SurfaceMesh& part : parts) {
+    all.V.middleRows(v, part.V.rows()) = part.V;
+    all.F.middleRows(f, part.F.rows()) = part.F.array() + static_cast<int>(v);
+    v += part.V.rows();
+    f += part.F.rows();
+  }
+  return all;
+}
+
+/// Each grain's pose: rigid, its centre and its rotation since the start (world =
+/// q (p₀ − c₀) + c); soft, its simulation vertices.
+CsvTable pose_table(const xpbd::Model& model, const std::vector<xpbd::Quat>& initial_orientation) {
+  const bool rigid = !model.bodies.empty() && model.bodies.front().kind == xpbd::BodyKind::kRigid;
+  CsvTable poses(rigid ? std::vector<std::string>{"grain", "x", "y", "z", "qw", "qx", "qy", "qz"}
+                       : std::vector<std::string>{"grain", "vertex", "x", "y", "z"});
+  for (size_t g = 0; g < model.bodies.size(); ++g) {
+    const xpbd::Body& body = model.bodies[g];
+    if (body.kind == xpbd::BodyKind::kRigid) {
+      const xpbd::RigidBody& r = model.rigid_bodies[body.rigid_body];
+      const xpbd::Quat q = r.q() * initial_orientation[body.rigid_body].conjugate();
+      poses.add_row({cell(static_cast<long>(g)), cell(r.x.x()), cell(r.x.y()), cell(r.x.z()), cell(q.w()), cell(q.x()),
+                     cell(q.y()), cell(q.z())});
+    } else {
+      for (int v = 0; v < body.particle_count; ++v) {
+        const auto x = model.particles.x.row(body.first_particle + v);
+        poses.add_row({cell(static_cast<long>(g)), cell(v), cell(x(0)), cell(x(1)), cell(x(2))});
+      }
+    }
+  }
+  return poses;
+}
+
 /// Bowl outline for the plots: the inside wall's profile r(z) on both sides.
 std::string bowl_outline(const grains::ChawanShape& s) {
   std::ostringstream out;
@@ -143,14 +183,14 @@ void pour_command(const PourSettings& settings, const std::filesystem::path& fol
   model.contact.dynamic_friction = settings.dynamic_friction;
   model.contact.cohesion = settings.cohesion;
   model.sleep.enabled = settings.sleeping;
-  std::vector<Vec3> initial_centre(settings.count);
+  std::vector<grains::Vertices> rest_vertices(settings.count);  // at the spout
   for (int g = 0; g < settings.count; ++g) {
     const Variant& variant = variants[instances[g].variant];
     const double P = instances[g].swell;
     const Eigen::Quaterniond& R = instances[g].rotation;
-    const Vec3 parked = drops[g] + parking(g);
-    const xpbd::TetMesh mesh{place(variant.grain.simulation.V, P, R, parked), variant.grain.simulation.T};
-    const xpbd::SphereSet spheres{place(variant.spheres.centres, P, R, parked), P * variant.spheres.radii};
+    rest_vertices[g] = place(variant.grain.simulation.V, P, R, drops[g]);
+    const xpbd::TetMesh mesh{rest_vertices[g].rowwise() + parking(g).transpose(), variant.grain.simulation.T};
+    const xpbd::SphereSet spheres{place(variant.spheres.centres, P, R, drops[g] + parking(g)), P * variant.spheres.radii};
     const double density = variant.grain.simulation_density;
     const int b = settings.body == xpbd::BodyKind::kRigid
                       ? xpbd::add_rigid_body(model, mesh, density, spheres)
@@ -159,12 +199,8 @@ void pour_command(const PourSettings& settings, const std::filesystem::path& fol
     model.bodies[b].bond_strength = settings.cohesion ? cohesion_ratio * mass * model.gravity.norm() : 0.0;
     model.bodies[b].asleep = true;  // parked until its layer leaves the spout
   }
-  const auto centre_of = [&](int g) -> Vec3 {
-    const xpbd::Body& body = model.bodies[g];
-    if (body.kind == xpbd::BodyKind::kRigid) return model.rigid_bodies[body.rigid_body].x;
-    return model.particles.x.middleRows(body.first_particle, body.particle_count).colwise().mean().transpose();
-  };
-  for (int g = 0; g < settings.count; ++g) initial_centre[g] = centre_of(g) - parking(g);
+  std::vector<Vec3> initial_centre(settings.count);
+  for (int g = 0; g < settings.count; ++g) initial_centre[g] = xpbd::body_centre(model, model.bodies[g]) - parking(g);
   // Moves a parked grain to the spout and wakes it.
   const auto release = [&](int g) {
     xpbd::Body& body = model.bodies[g];
@@ -213,60 +249,29 @@ void pour_command(const PourSettings& settings, const std::filesystem::path& fol
                    cell(contact.contacts), cell(contact.bonds),
                    cell(contact.max_penetration), cell(xpbd::kinetic_energy(model)), cell(t.broad_phase),
                    cell(t.narrow_phase), cell(t.solve()), cell(t.sleeping)});
-    // Per frame: each grain's motion since the start, world = q (p₀ − c₀) + c (rigid), or its
-    // simulation vertices (soft).
-    CsvTable poses(settings.body == xpbd::BodyKind::kRigid
-                       ? std::vector<std::string>{"grain", "x", "y", "z", "qw", "qx", "qy", "qz"}
-                       : std::vector<std::string>{"grain", "vertex", "x", "y", "z"});
-    for (int g = 0; g < settings.count; ++g) {
-      const xpbd::Body& body = model.bodies[g];
-      if (body.kind == xpbd::BodyKind::kRigid) {
-        const xpbd::RigidBody& rigid = model.rigid_bodies[body.rigid_body];
-        const xpbd::Quat q = rigid.q() * initial_orientation[body.rigid_body].conjugate();
-        poses.add_row({cell(g), cell(rigid.x.x()), cell(rigid.x.y()), cell(rigid.x.z()), cell(q.w()), cell(q.x()),
-                       cell(q.y()), cell(q.z())});
-      } else {
-        for (int v = 0; v < body.particle_count; ++v) {
-          const auto x = model.particles.x.row(body.first_particle + v);
-          poses.add_row({cell(g), cell(v), cell(x(0)), cell(x(1)), cell(x(2))});
-        }
-      }
-    }
     char name[32];
     std::snprintf(name, sizeof name, "frame_%04d", frame);
-    write_file_atomically(folder / "frames" / (std::string(name) + ".csv"), poses.text());
+    write_file_atomically(folder / "frames" / (std::string(name) + ".csv"), pose_table(model, initial_orientation).text());
     if (settings.render_meshes) {
-      // Every grain's render mesh through its embedding, merged into one PLY.
-      grains::SurfaceMesh merged;
-      std::vector<grains::Vertices> parts;
-      std::vector<grains::Triangles> faces;
-      long vertex_count = 0, face_count = 0;
+      // Every grain's render mesh through its embedding, from its simulation vertices now.
+      std::vector<grains::SurfaceMesh> meshes;
       for (int g = 0; g < settings.count; ++g) {
-        const Variant& variant = variants[instances[g].variant];
+        const grains::Grain& grain = variants[instances[g].variant].grain;
         const xpbd::Body& body = model.bodies[g];
         grains::Vertices simulation;
         if (body.kind == xpbd::BodyKind::kRigid) {
           const xpbd::RigidBody& rigid = model.rigid_bodies[body.rigid_body];
-          const grains::Vertices rest = place(variant.grain.simulation.V, instances[g].swell, instances[g].rotation, drops[g]);
           const xpbd::Quat q = rigid.q() * initial_orientation[body.rigid_body].conjugate();
-          simulation = ((rest.rowwise() - initial_centre[g].transpose()) * q.toRotationMatrix().transpose()).rowwise() +
+          simulation = ((rest_vertices[g].rowwise() - initial_centre[g].transpose()) * q.toRotationMatrix().transpose())
+                           .rowwise() +
                        rigid.x.transpose();
         } else {
           simulation = model.particles.x.middleRows(body.first_particle, body.particle_count);
         }
-        parts.push_back(grains::apply_embedding(variant.grain.embedding, simulation, variant.grain.simulation.T));
-        faces.push_back(variant.grain.render.F.array() + static_cast<int>(vertex_count));
-        vertex_count += parts.back().rows();
-        face_count += faces.back().rows();
-      }
-      merged.V.resize(vertex_count, 3);
-      merged.F.resize(face_count, 3);
-      for (size_t k = 0, v = 0, f = 0; k < parts.size(); v += parts[k].rows(), f += faces[k].rows(), ++k) {
-        merged.V.middleRows(v, parts[k].rows()) = parts[k];
-        merged.F.middleRows(f, faces[k].rows()) = faces[k];
+        meshes.push_back({grains::apply_embedding(grain.embedding, simulation, grain.simulation.T), grain.render.F});
       }
       write_file_atomically(folder / "frames" / (std::string(name) + ".ply"),
-                            [&](std::ostream& out) { grains::write_ply(out, merged); });
+                            [&](std::ostream& out) { grains::write_ply(out, merged(meshes)); });
     }
     progress.update(frame);
     stop_point();
@@ -277,7 +282,7 @@ void pour_command(const PourSettings& settings, const std::filesystem::path& fol
 
   CsvTable final_centres({"grain", "x", "y", "z", "r"});
   for (int g = 0; g < settings.count; ++g) {
-    const Vec3 c = centre_of(g);
+    const Vec3 c = xpbd::body_centre(model, model.bodies[g]);
     final_centres.add_row({cell(g), cell(c.x()), cell(c.y()), cell(c.z()), cell(std::hypot(c.x(), c.y()))});
   }
   write_file_atomically(folder / "final_centres.csv", final_centres.text());

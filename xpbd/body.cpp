@@ -72,26 +72,35 @@ int add_soft_body(Model& model, const TetMesh& mesh, double density, const LameP
   body.first_particle = offset;
   body.particle_count = single.particles.size();
   for (int s = 0; s < spheres.radii.size(); ++s) {
+    // The tet holding the centre, or the one it lies least outside.
     const Vec3 centre = spheres.centres.row(s).transpose();
     double best = std::numeric_limits<double>::infinity();
+    int holder = 0;
+    Eigen::Vector4d weights;
     for (int t = 0; t < mesh.T.rows() && best > 0.0; ++t) {
       double outside;
       const Eigen::Vector4d w = barycentric(tet_positions(mesh.V, mesh.T, t), centre, &outside);
-      if (outside < best) {
-        best = outside;
-        if (body.anchors.size() == static_cast<size_t>(s)) {
-          body.anchors.emplace_back();
-          body.weights.emplace_back();
-        }
-        body.anchors[s] = {mesh.T(t, 0) + offset, mesh.T(t, 1) + offset, mesh.T(t, 2) + offset,
-                           mesh.T(t, 3) + offset};
-        body.weights[s] = w;
-      }
+      if (outside < best) best = outside, holder = t, weights = w;
     }
+    body.anchors.push_back({mesh.T(holder, 0) + offset, mesh.T(holder, 1) + offset, mesh.T(holder, 2) + offset,
+                            mesh.T(holder, 3) + offset});
+    body.weights.push_back(weights);
     body.radii.push_back(spheres.radii[s]);
   }
   model.bodies.push_back(std::move(body));
   return static_cast<int>(model.bodies.size()) - 1;
+}
+
+Vec3 body_centre(const Model& model, const Body& body) {
+  if (body.kind == BodyKind::kRigid) return model.rigid_bodies[body.rigid_body].x;
+  const Eigen::VectorXd masses = model.particles.w.segment(body.first_particle, body.particle_count).cwiseInverse();
+  return model.particles.x.middleRows(body.first_particle, body.particle_count).transpose() * masses / masses.sum();
+}
+
+double reach(const Body& body) {
+  double r = 0.0;
+  for (int s = 0; s < body.sphere_count(); ++s) r = std::max(r, body.local_centres[s].norm() + body.radii[s]);
+  return r;
 }
 
 Vec3 sphere_centre(const Model& model, const Body& body, int s) {

@@ -61,6 +61,13 @@ int add_rigid_body(Model& model, const TetMesh& mesh, double density, const Sphe
 int add_soft_body(Model& model, const TetMesh& mesh, double density, const LameParameters& material,
                   double rayleigh_time, const SphereSet& spheres);
 
+/// Centre of mass: the rigid body's x, or the mass-weighted mean of a soft body's particles.
+Vec3 body_centre(const Model& model, const Body& body);
+
+/// Rigid: the largest distance from the centre of mass to a point of its spheres [m] (0 for a
+/// soft body, whose points are its particles).
+double reach(const Body& body);
+
 /// The operations contact needs, for either kind of body. `point` is a world point attached
 /// to sphere s (a contact point on its surface).
 Vec3 sphere_centre(const Model& model, const Body& body, int s);

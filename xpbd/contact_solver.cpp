@@ -26,9 +26,7 @@ double motion_bound(const Model& model, const Body& body, double span) {
   if (body.kind == BodyKind::kRigid) {
     const RigidBody& rigid = model.rigid_bodies[body.rigid_body];
     if (rigid.inverse_mass == 0.0) return 0.0;
-    double reach = 0.0;
-    for (const Vec3& c : body.local_centres) reach = std::max(reach, c.norm());
-    speed = rigid.v.norm() + rigid.omega.norm() * reach;
+    speed = rigid.v.norm() + rigid.omega.norm() * reach(body);
   } else {
     for (int i = body.first_particle; i < body.first_particle + body.particle_count; ++i)
       speed = std::max(speed, model.particles.v.row(i).norm());
@@ -134,8 +132,8 @@ void ContactSolver::find_candidates(double time, double span) {
   for (Candidate& candidate : found) {
     while (old != candidates_.end() && old->key < candidate.key) ++old;
     if (old != candidates_.end() && old->key == candidate.key) candidate = *old;
-    candidate.step_normal = 0.0;
-    candidate.step_friction.setZero();
+    candidate.interval_normal = 0.0;
+    candidate.interval_friction.setZero();
   }
   candidates_ = std::move(found);
   statistics_.candidates = static_cast<int>(candidates_.size());
@@ -354,10 +352,10 @@ void ContactSolver::end_substep(bool end_of_interval) {
       if (candidate.key[0] != key[0] || candidate.key[1] != key[1]) break;
       const ContactPoints p = locate(contact);
       deepest = std::max(deepest, -p.n.dot(p.pa - p.pb));
-      candidate.step_normal += contact.lambda_normal;
-      candidate.step_friction += contact.friction;
-      normal += candidate.step_normal;
-      friction += candidate.step_friction;
+      candidate.interval_normal += contact.lambda_normal;
+      candidate.interval_friction += contact.friction;
+      normal += candidate.interval_normal;
+      friction += candidate.interval_friction;
       if (contact.lambda_normal == 0.0) continue;
       touching = true;
       stuck = stuck || !contact.capped;

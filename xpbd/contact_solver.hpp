@@ -71,8 +71,8 @@ class ContactSolver {
     bool sliding = false;
     bool anchored = false;  ///< sticking, with anchors (material coordinates on a and b)
     Vec3 anchor_a = Vec3::Zero(), anchor_b = Vec3::Zero();
-    double step_normal = 0.0;             ///< Σλ_n over the interval's substeps so far
-    Vec3 step_friction = Vec3::Zero();    ///< Σ friction impulses over them
+    double interval_normal = 0.0;             ///< Σλ_n over the interval's substeps so far
+    Vec3 interval_friction = Vec3::Zero();    ///< Σ friction impulses over them
   };
   static int collider_key(int collider) { return -1 - collider; }
   static bool is_collider(int b) { return b < 0; }

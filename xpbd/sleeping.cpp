@@ -18,11 +18,9 @@ StepStart record_step_start(const Model& model) {
 double body_step_speed(const Model& model, const Body& body, const StepStart& start, double dt) {
   if (body.kind == BodyKind::kRigid) {
     const RigidBody& rigid = model.rigid_bodies[body.rigid_body];
-    double reach = 0.0;
-    for (int s = 0; s < body.sphere_count(); ++s) reach = std::max(reach, body.local_centres[s].norm() + body.radii[s]);
     const double cosine = std::min(1.0, std::abs(rigid.q().dot(start.rigid_orientations[body.rigid_body])));
     const double angle = 2.0 * std::acos(cosine);
-    return ((rigid.x - start.rigid_centres[body.rigid_body]).norm() + angle * reach) / dt;
+    return ((rigid.x - start.rigid_centres[body.rigid_body]).norm() + angle * reach(body)) / dt;
   }
   double moved = 0.0;
   for (int i = body.first_particle; i < body.first_particle + body.particle_count; ++i)

@@ -37,13 +37,7 @@ inline int add_grain(Model& model, BodyKind kind, const Vec3& corner, double you
 }
 
 /// Centre of mass of body b.
-inline Vec3 body_centre(const Model& model, int b) {
-  const Body& body = model.bodies[b];
-  if (body.kind == BodyKind::kRigid) return model.rigid_bodies[body.rigid_body].x;
-  const Eigen::VectorXd w = model.particles.w.segment(body.first_particle, body.particle_count);
-  const Eigen::VectorXd m = w.cwiseInverse();
-  return (model.particles.x.middleRows(body.first_particle, body.particle_count).transpose() * m) / m.sum();
-}
+inline Vec3 body_centre(const Model& model, int b) { return xpbd::body_centre(model, model.bodies[b]); }
 
 /// Total linear momentum of bodies and free particles.
 inline Vec3 linear_momentum(const Model& model) {
