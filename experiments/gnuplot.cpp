@@ -18,6 +18,7 @@
 #include <string_view>
 #include <utility>
 
+#include "experiments/file_descriptor.hpp"
 #include "experiments/interrupt.hpp"
 #include "experiments/output.hpp"
 
@@ -26,28 +27,10 @@ extern char** environ;
 namespace rice::experiments {
 namespace {
 
-// A file descriptor, closed on every path out of its scope.
-class Descriptor {
- public:
-  Descriptor() = default;
-  ~Descriptor() { reset(); }
-  Descriptor(const Descriptor&) = delete;
-  Descriptor& operator=(const Descriptor&) = delete;
-
-  int get() const { return fd_; }
-  void reset(int fd = -1) {
-    if (fd_ >= 0) ::close(fd_);
-    fd_ = fd;
-  }
-
- private:
-  int fd_ = -1;
-};
-
 // A pipe whose ends are closed in this process at exec (O_CLOEXEC), so that no other child
 // started meanwhile inherits them and holds gnuplot's stdin open.
 struct Pipe {
-  Descriptor read, write;
+  FileDescriptor read, write;
   bool open() {
     int fds[2];
     if (::pipe2(fds, O_CLOEXEC) != 0) return false;

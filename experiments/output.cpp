@@ -17,6 +17,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "experiments/file_descriptor.hpp"
 #include "experiments/interrupt.hpp"
 
 namespace rice::experiments {
@@ -41,18 +42,6 @@ void write_all(int fd, std::string_view bytes, const fs::path& path) {
   }
 }
 
-// Closes a descriptor on every path out of a scope.
-class ClosedOnExit {
- public:
-  explicit ClosedOnExit(int fd) : fd_(fd) {}
-  ~ClosedOnExit() { ::close(fd_); }
-  ClosedOnExit(const ClosedOnExit&) = delete;
-  ClosedOnExit& operator=(const ClosedOnExit&) = delete;
-
- private:
-  int fd_;
-};
-
 // Gives the unnamed file open as `fd` the name `path`. linkat cannot replace a name, so an
 // existing file is unlinked and the link tried again: `path` is absent for that moment, never
 // partial, and no other name ever exists. False where linking is impossible (/proc not
@@ -74,7 +63,7 @@ bool write_unnamed(const fs::path& folder, const fs::path& path, std::string_vie
   const int fd = ::open(folder.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0644);
   if (fd < 0) return false;
   // Not checked at close: the file systems with O_TMPFILE are local and report errors at write.
-  const ClosedOnExit closed(fd);
+  const FileDescriptor closed(fd);
   write_all(fd, bytes, path);
   return link_into_place(fd, path);
 }
