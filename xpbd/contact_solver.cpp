@@ -48,6 +48,11 @@ ContactSolver::ContactSolver(Model& model) : model_(model) {
   if (s.cohesion) bonds_.emplace();
   sphere_offset_.assign(1, 0);
   for (const Body& body : model.bodies) sphere_offset_.push_back(sphere_offset_.back() + body.sphere_count());
+  centre_now_.resize(sphere_offset_.back());
+  centre_start_.resize(sphere_offset_.back());
+  start_box_.resize(model.bodies.size());
+  motion_.assign(model.bodies.size(), 0.0);
+  centres_at_rest_.assign(model.bodies.size(), 0);
   has_friction_ = s.static_friction > 0.0;
   for (size_t c = 0; c < model.colliders.size(); ++c) {
     validate(model.colliders[c], static_cast<int>(c));
@@ -59,20 +64,12 @@ void ContactSolver::find_candidates(double time, double span) {
   const auto& bodies = model_.bodies;
   const double margin = model_.contact.margin;
   std::vector<double> pad(bodies.size());
-  std::vector<Box> tight(bodies.size()), boxes(bodies.size());
-  centre_now_.resize(sphere_offset_.back());
+  std::vector<Box> boxes(bodies.size());
   for (size_t b = 0; b < bodies.size(); ++b) {
     pad[b] = motion_bound(model_, bodies[b], span) + margin;
-    Box box{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
-    for (int s = 0; s < bodies[b].sphere_count(); ++s) {
-      const Vec3 c = centre_now_[sphere_offset_[b] + s] = sphere_centre(model_, bodies[b], s);
-      box.lower = box.lower.cwiseMin(c - Vec3::Constant(bodies[b].radii[s]));
-      box.upper = box.upper.cwiseMax(c + Vec3::Constant(bodies[b].radii[s]));
-    }
-    tight[b] = box;
-    boxes[b] = {box.lower - Vec3::Constant(pad[b]), box.upper + Vec3::Constant(pad[b])};
+    update_centres(static_cast<int>(b), nullptr);
+    boxes[b] = {start_box_[b].lower - Vec3::Constant(pad[b]), start_box_[b].upper + Vec3::Constant(pad[b])};
   }
-  const auto centre = [&](int b, int s) -> const Vec3& { return centre_now_[sphere_offset_[b] + s]; };
   const std::vector<std::pair<int, int>> pairs = overlapping_pairs(boxes);
   // A body that moved in the last step wakes the sleeping bodies its box reaches.
   for (const auto& [a, b] : pairs) {
@@ -81,62 +78,120 @@ void ContactSolver::find_candidates(double time, double span) {
     if (body_a.asleep && !body_b.asleep && body_b.moving) wake(body_a);
     if (body_b.asleep && !body_a.asleep && body_a.moving) wake(body_b);
   }
-  // Sphere pairs. Only spheres that reach the other body's box are paired (a grain's 20–60
-  // spheres make 400–3600 pairs, of which a touching neighbour needs a few dozen). Pairs come
-  // out sorted by key: the body pairs are sorted and the loops run over s_a, then s_b.
-  std::vector<Candidate> found;
+  // Candidate sphere pairs of each body pair: spheres that reach the other body's box, paired
+  // when their gap is within reach (a grain's 20–60 spheres make 400–3600 pairs, of which a
+  // touching neighbour needs a few dozen).
+  std::vector<BodyPair> found;
+  sphere_pairs_.clear();
   std::vector<int> near_a, near_b;
   const auto spheres_near = [&](int body, const Box& other, double reach, std::vector<int>& near) {
     near.clear();
     for (int s = 0; s < bodies[body].sphere_count(); ++s) {
-      const Vec3& c = centre(body, s);
+      const Vec3& c = centre_now_[sphere_offset_[body] + s];
       if ((c - c.cwiseMax(other.lower).cwiseMin(other.upper)).norm() - bodies[body].radii[s] < reach) near.push_back(s);
     }
   };
   for (const auto& [a, b] : pairs) {
     if (bodies[a].asleep && bodies[b].asleep) continue;  // sleeping bodies do not touch each other
     const double reach = pad[a] + pad[b];
-    spheres_near(a, tight[b], reach, near_a);
+    spheres_near(a, start_box_[b], reach, near_a);
     if (near_a.empty()) continue;
-    spheres_near(b, tight[a], reach, near_b);
+    spheres_near(b, start_box_[a], reach, near_b);
+    const int first = static_cast<int>(sphere_pairs_.size());
     for (const int sa : near_a)
       for (const int sb : near_b) {
-        const double gap = (centre(a, sa) - centre(b, sb)).norm() - bodies[a].radii[sa] - bodies[b].radii[sb];
-        if (gap < reach) found.push_back({{a, b, sa, sb}});
+        const Vec3 d = centre_now_[sphere_offset_[a] + sa] - centre_now_[sphere_offset_[b] + sb];
+        if (d.norm() - bodies[a].radii[sa] - bodies[b].radii[sb] < reach) sphere_pairs_.push_back({sa, sb});
       }
+    if (static_cast<int>(sphere_pairs_.size()) > first) found.push_back({a, b, first, static_cast<int>(sphere_pairs_.size())});
   }
-  std::vector<Candidate> against_colliders;
   for (size_t c = 0; c < model_.colliders.size(); ++c) {
     const Collider& collider = model_.colliders[c];
     const ColliderKeyframe start = collider_pose(collider, time), end = collider_pose(collider, time + span);
     const bool moving = start.translation != end.translation || start.rotation.coeffs() != end.rotation.coeffs();
     for (size_t b = 0; b < bodies.size(); ++b) {
       if (bodies[b].asleep && !moving) continue;  // a sleeping body rests on a collider at rest
+      const int first = static_cast<int>(sphere_pairs_.size());
       for (int s = 0; s < bodies[b].sphere_count(); ++s) {
-        const Vec3 local = to_local(start, centre(b, s));
-        const double reach = pad[b] + (to_world(end, local) - centre(b, s)).norm();
-        if (local_signed_distance(collider, local).distance - bodies[b].radii[s] < reach) {
-          against_colliders.push_back({{static_cast<int>(b), collider_key(static_cast<int>(c)), s, 0}});
-          wake(model_.bodies[b]);  // a moving collider reaches it
-        }
+        const Vec3& centre = centre_now_[sphere_offset_[b] + s];
+        const Vec3 local = to_local(start, centre);
+        const double reach = pad[b] + (to_world(end, local) - centre).norm();
+        if (local_signed_distance(collider, local).distance - bodies[b].radii[s] < reach) sphere_pairs_.push_back({s, 0});
       }
+      if (static_cast<int>(sphere_pairs_.size()) == first) continue;
+      found.push_back({static_cast<int>(b), collider_key(static_cast<int>(c)), first, static_cast<int>(sphere_pairs_.size())});
+      if (bodies[b].asleep) wake(model_.bodies[b]);  // a moving collider reaches it
     }
   }
-  const auto by_key = [](const Candidate& x, const Candidate& y) { return x.key < y.key; };
-  std::sort(against_colliders.begin(), against_colliders.end(), by_key);
-  std::vector<Candidate> all(found.size() + against_colliders.size());
-  std::merge(found.begin(), found.end(), against_colliders.begin(), against_colliders.end(), all.begin(), by_key);
-  found = std::move(all);
-  // A pair that stays a candidate keeps its friction state and anchors.
-  auto old = candidates_.begin();
-  for (Candidate& candidate : found) {
-    while (old != candidates_.end() && old->key < candidate.key) ++old;
-    if (old != candidates_.end() && old->key == candidate.key) candidate = *old;
-    candidate.interval_normal = 0.0;
-    candidate.interval_friction.setZero();
+  // In key order: by body a, then b (colliders, with negative keys, first).
+  std::sort(found.begin(), found.end(), [](const BodyPair& x, const BodyPair& y) {
+    return std::pair(x.a, x.b) < std::pair(y.a, y.b);
+  });
+  body_pairs_ = std::move(found);
+  // The contact states of pairs that stay in reach carry over, with their interval sums reset.
+  std::vector<ContactState> kept;
+  auto pair = body_pairs_.begin();
+  for (ContactState& state : states_) {
+    const std::pair<int, int> key(state.key[0], state.key[1]);
+    while (pair != body_pairs_.end() && std::pair(pair->a, pair->b) < key) ++pair;
+    if (pair == body_pairs_.end() || std::pair(pair->a, pair->b) != key) continue;
+    state.interval_normal = 0.0;
+    state.interval_friction.setZero();
+    kept.push_back(state);
   }
-  candidates_ = std::move(found);
-  statistics_.candidates = static_cast<int>(candidates_.size());
+  states_ = std::move(kept);
+  statistics_.candidates = 0;
+  active_bodies_.clear();
+  for (const BodyPair& p : body_pairs_) {
+    statistics_.candidates += p.last - p.first;
+    active_bodies_.push_back(p.a);
+    if (!is_collider(p.b)) active_bodies_.push_back(p.b);
+  }
+  std::sort(active_bodies_.begin(), active_bodies_.end());
+  active_bodies_.erase(std::unique(active_bodies_.begin(), active_bodies_.end()), active_bodies_.end());
+}
+
+void ContactSolver::update_centres(int b, const Positions* x_previous) {
+  const Body& body = model_.bodies[b];
+  if (body.asleep && centres_at_rest_[b]) return;  // a sleeping body does not move
+  Box box{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
+  double motion = 0.0;
+  for (int s = 0; s < body.sphere_count(); ++s) {
+    const int k = sphere_offset_[b] + s;
+    centre_now_[k] = sphere_centre(model_, body, s);
+    centre_start_[k] = x_previous && !body.asleep ? previous_point(model_, body, s, centre_now_[k], *x_previous)
+                                                   : centre_now_[k];
+    box.lower = box.lower.cwiseMin(centre_start_[k] - Vec3::Constant(body.radii[s]));
+    box.upper = box.upper.cwiseMax(centre_start_[k] + Vec3::Constant(body.radii[s]));
+    motion = std::max(motion, (centre_now_[k] - centre_start_[k]).norm());
+  }
+  start_box_[b] = box;
+  motion_[b] = motion;
+  centres_at_rest_[b] = body.asleep;
+}
+
+bool ContactSolver::may_touch(const BodyPair& pair) const {
+  const double margin = model_.contact.margin;
+  const Box& box_a = start_box_[pair.a];
+  if (!is_collider(pair.b)) {
+    // The distance between two spheres is at least that between boxes holding them.
+    const Box& box_b = start_box_[pair.b];
+    const Vec3 separation = (box_b.lower - box_a.upper).cwiseMax(box_a.lower - box_b.upper).cwiseMax(0.0);
+    return separation.norm() < motion_[pair.a] + motion_[pair.b] + margin;
+  }
+  // Against a collider at rest: a sphere's distance is at least the distance at the box's
+  // centre less L times the half diagonal, L bounding the distance's gradient (√3 for a
+  // trilinear grid, whose gradient has components of at most 1; 1 for the analytic shapes).
+  const int k = collider_index(pair.b);
+  const Collider& collider = model_.colliders[k];
+  if (pose_start_[k].translation != pose_end_[k].translation ||
+      pose_start_[k].rotation.coeffs() != pose_end_[k].rotation.coeffs())
+    return true;
+  const double lipschitz = collider.shape == ColliderShape::kDistanceGrid ? std::sqrt(3.0) : 1.0;
+  const Vec3 centre = 0.5 * (box_a.lower + box_a.upper);
+  const double half_diagonal = 0.5 * (box_a.upper - box_a.lower).norm();
+  return local_signed_distance(collider, to_local(pose_start_[k], centre)).distance - lipschitz * half_diagonal <
+         motion_[pair.a] + margin;
 }
 
 void ContactSolver::begin_substep(double time, double h, const Positions& x_previous) {
@@ -148,57 +203,73 @@ void ContactSolver::begin_substep(double time, double h, const Positions& x_prev
     pose_start_.push_back(collider_pose(collider, time));
     pose_end_.push_back(collider_pose(collider, time + h));
   }
-  // Every sphere centre now (after prediction) and at the substep's start, once.
-  centre_now_.resize(sphere_offset_.back());
-  centre_start_.resize(sphere_offset_.back());
-  for (size_t b = 0; b < model_.bodies.size(); ++b) {
-    const Body& body = model_.bodies[b];
-    for (int s = 0; s < body.sphere_count(); ++s) {
-      const int k = sphere_offset_[b] + s;
-      centre_now_[k] = sphere_centre(model_, body, s);
-      centre_start_[k] = previous_point(model_, body, s, centre_now_[k], x_previous);
+  // The sphere centres of every body with candidates, now (after prediction) and at the
+  // substep's start, once.
+  for (const int b : active_bodies_) update_centres(b, &x_previous);
+  // Contacts come out in key order, so the states of the last substep are merged in one pass;
+  // a state whose spheres do not touch in this substep loses its anchors.
+  std::vector<ContactState> previous = std::move(states_);
+  states_.clear();
+  auto old = previous.begin();
+  const auto state_of = [&](const std::array<int, 4>& key) {
+    for (; old != previous.end() && old->key < key; ++old) {
+      old->anchored = false;
+      states_.push_back(*old);
     }
-  }
-  const double margin = model_.contact.margin;
-  contacts_.clear();
-  for (size_t c = 0; c < candidates_.size(); ++c) {
-    const auto [a, b, sa, sb] = candidates_[c].key;
-    const Body& body_a = model_.bodies[a];
-    const Vec3& ca = centre_now_[sphere_offset_[a] + sa];
-    const Vec3& ca_start = centre_start_[sphere_offset_[a] + sa];
-    const double ra = body_a.radii[sa];
-    Contact contact{static_cast<int>(c), Vec3::UnitZ(), Vec3::Zero()};
-    if (is_collider(b)) {
-      const int k = collider_index(b);
-      const Collider& collider = model_.colliders[k];
-      const Vec3 local = to_local(pose_start_[k], ca_start);
-      const SignedDistance sd = local_signed_distance(collider, local);
-      const double moved = (ca - ca_start).norm() + (to_world(pose_end_[k], local) - ca_start).norm();
-      if (sd.distance - ra >= moved + margin) {
-        candidates_[c].anchored = false;
-        continue;
-      }
-      contact.normal = sd.normal;
-      contact.collider_point = local - sd.distance * sd.normal;
+    if (old != previous.end() && old->key == key) {
+      states_.push_back(*old++);
     } else {
-      const Body& body_b = model_.bodies[b];
-      const Vec3& cb = centre_now_[sphere_offset_[b] + sb];
-      const Vec3& cb_start = centre_start_[sphere_offset_[b] + sb];
-      const Vec3 d = ca_start - cb_start;
-      const double distance = d.norm();
-      const double gap = distance - ra - body_b.radii[sb];
-      if (gap >= (ca - ca_start).norm() + (cb - cb_start).norm() + margin) {
-        candidates_[c].anchored = false;
-        continue;
-      }
-      if (distance > 0.0) contact.normal = d / distance;
-      if (bonds_ && gap <= model_.contact.bond_distance)
-        touches.push_back({candidates_[c].key, ca_start - ra * contact.normal, cb_start + body_b.radii[sb] * contact.normal});
+      states_.push_back({key});
     }
-    contacts_.push_back(contact);
+    return static_cast<int>(states_.size()) - 1;
+  };
+  contacts_.clear();
+  for (const BodyPair& pair : body_pairs_)
+    if (may_touch(pair)) add_contacts(pair, state_of, touches);
+  for (; old != previous.end(); ++old) {
+    old->anchored = false;
+    states_.push_back(*old);
   }
   statistics_.contacts = static_cast<int>(contacts_.size());
   if (bonds_) bonds_->begin_substep(model_, touches, x_previous);
+}
+
+template <class StateOf>
+void ContactSolver::add_contacts(const BodyPair& pair, StateOf& state_of, std::vector<CohesionBonds::Touch>& touches) {
+  // A contact for every sphere pair whose gap at the substep's start is smaller than the
+  // distance its two sides move in the substep and the margin.
+  const double margin = model_.contact.margin;
+  const Body& body_a = model_.bodies[pair.a];
+  const auto now = [&](int body, int s) -> const Vec3& { return centre_now_[sphere_offset_[body] + s]; };
+  const auto start = [&](int body, int s) -> const Vec3& { return centre_start_[sphere_offset_[body] + s]; };
+  if (is_collider(pair.b)) {
+    const int k = collider_index(pair.b);
+    const Collider& collider = model_.colliders[k];
+    for (int i = pair.first; i < pair.last; ++i) {
+      const int sa = sphere_pairs_[i][0];
+      const Vec3 local = to_local(pose_start_[k], start(pair.a, sa));
+      const SignedDistance sd = local_signed_distance(collider, local);
+      const double moved =
+          (now(pair.a, sa) - start(pair.a, sa)).norm() + (to_world(pose_end_[k], local) - start(pair.a, sa)).norm();
+      if (sd.distance - body_a.radii[sa] >= moved + margin) continue;
+      contacts_.push_back({state_of({pair.a, pair.b, sa, 0}), sd.normal, local - sd.distance * sd.normal});
+    }
+    return;
+  }
+  const Body& body_b = model_.bodies[pair.b];
+  for (int i = pair.first; i < pair.last; ++i) {
+    const auto [sa, sb] = sphere_pairs_[i];
+    const Vec3 d = start(pair.a, sa) - start(pair.b, sb);
+    const double distance = d.norm();
+    const double gap = distance - body_a.radii[sa] - body_b.radii[sb];
+    if (gap >= (now(pair.a, sa) - start(pair.a, sa)).norm() + (now(pair.b, sb) - start(pair.b, sb)).norm() + margin)
+      continue;
+    const Vec3 normal = distance > 0.0 ? Vec3(d / distance) : Vec3::UnitZ();
+    const std::array<int, 4> key{pair.a, pair.b, sa, sb};
+    contacts_.push_back({state_of(key), normal, Vec3::Zero()});
+    if (bonds_ && gap <= model_.contact.bond_distance)
+      touches.push_back({key, start(pair.a, sa) - body_a.radii[sa] * normal, start(pair.b, sb) + body_b.radii[sb] * normal});
+  }
 }
 
 void ContactSolver::project(const Positions& x_previous) {
@@ -211,7 +282,7 @@ void ContactSolver::project(const Positions& x_previous) {
 }
 
 ContactSolver::ContactPoints ContactSolver::locate(const Contact& contact) const {
-  const auto [a, b, sa, sb] = candidates_[contact.candidate].key;
+  const auto [a, b, sa, sb] = states_[contact.state].key;
   ContactPoints p;
   p.a = &model_.bodies[a];
   const Vec3 ca = sphere_centre(model_, *p.a, sa);
@@ -230,40 +301,40 @@ ContactSolver::ContactPoints ContactSolver::locate(const Contact& contact) const
 }
 
 double ContactSolver::inverse_mass(const Contact& contact, const ContactPoints& p, const Vec3& direction) const {
-  const auto [a, b, sa, sb] = candidates_[contact.candidate].key;
+  const auto [a, b, sa, sb] = states_[contact.state].key;
   return inverse_mass_at(model_, *p.a, sa, p.pa, direction) +
          (p.b ? inverse_mass_at(model_, *p.b, sb, p.pb, direction) : 0.0);
 }
 
 void ContactSolver::push(const Contact& contact, const ContactPoints& p, const Vec3& impulse) {
-  const auto [a, b, sa, sb] = candidates_[contact.candidate].key;
+  const auto [a, b, sa, sb] = states_[contact.state].key;
   apply_impulse_at(model_, *p.a, sa, p.pa, impulse);
   if (p.b) apply_impulse_at(model_, *p.b, sb, p.pb, -impulse);
 }
 
 Vec3 ContactSolver::tangential_slip(const Contact& contact, const ContactPoints& p, const Positions& x_previous) const {
   // Relative displacement of the two contact points over the substep, tangential part.
-  const auto [a, b, sa, sb] = candidates_[contact.candidate].key;
+  const auto [a, b, sa, sb] = states_[contact.state].key;
   const Vec3 da = p.pa - previous_point(model_, *p.a, sa, p.pa, x_previous);
   const Vec3 db = p.b ? Vec3(p.pb - previous_point(model_, *p.b, sb, p.pb, x_previous)) : Vec3(p.pb - p.pb_start);
   const Vec3 d = da - db;
   return d - p.n.dot(d) * p.n;
 }
 
-Vec3 ContactSolver::anchored_slip(Candidate& candidate, const ContactPoints& p, const Positions& x_previous) const {
+Vec3 ContactSolver::anchored_slip(ContactState& state, const ContactPoints& p, const Positions& x_previous) const {
   // Anchors, set once: a's material point now at p_a, and b's material point where p_a was at
   // the substep's start. Their tangential separation is the slip since sticking began.
-  const auto [a, b, sa, sb] = candidate.key;
-  if (!candidate.anchored) {
+  const auto [a, b, sa, sb] = state.key;
+  if (!state.anchored) {
     const Vec3 start = previous_point(model_, *p.a, sa, p.pa, x_previous);
-    candidate.anchor_a = material_coordinates(model_, *p.a, sa, p.pa);
-    candidate.anchor_b = p.b ? material_coordinates(model_, *p.b, sb, start, &x_previous)
+    state.anchor_a = material_coordinates(model_, *p.a, sa, p.pa);
+    state.anchor_b = p.b ? material_coordinates(model_, *p.b, sb, start, &x_previous)
                              : to_local(pose_start_[collider_index(b)], start);
-    candidate.anchored = true;
+    state.anchored = true;
   }
-  const Vec3 on_b = p.b ? material_point(model_, *p.b, sb, candidate.anchor_b)
-                        : to_world(pose_end_[collider_index(b)], candidate.anchor_b);
-  const Vec3 d = material_point(model_, *p.a, sa, candidate.anchor_a) - on_b;
+  const Vec3 on_b = p.b ? material_point(model_, *p.b, sb, state.anchor_b)
+                        : to_world(pose_end_[collider_index(b)], state.anchor_b);
+  const Vec3 d = material_point(model_, *p.a, sa, state.anchor_a) - on_b;
   return d - p.n.dot(d) * p.n;
 }
 
@@ -283,13 +354,13 @@ void ContactSolver::project_friction(Contact& contact, const Positions& x_previo
   // Sticking: cancel the slip since the anchors were set, in full (end_substep checks
   // Coulomb's cone over the pair). Sliding: cancel the slip of this substep with impulses
   // that sum to at most μ_k λ_n.
-  Candidate& candidate = candidates_[contact.candidate];
-  const int b = candidate.key[1];
+  ContactState& state = states_[contact.state];
+  const int b = state.key[1];
   contact.capped = false;
   if (contact.lambda_normal == 0.0) return;  // not touching: no friction
   const ContactPoints p = locate(contact);
   const Vec3 tangential =
-      candidate.sliding ? tangential_slip(contact, p, x_previous) : anchored_slip(candidate, p, x_previous);
+      state.sliding ? tangential_slip(contact, p, x_previous) : anchored_slip(state, p, x_previous);
   const double slip = tangential.norm();
   if (!(slip > 0.0)) return;
   const Vec3 t = tangential / slip;
@@ -297,7 +368,7 @@ void ContactSolver::project_friction(Contact& contact, const Positions& x_previo
   if (!(w > 0.0)) return;
   const double needed = slip / w;
   double delta = needed;
-  if (candidate.sliding) {
+  if (state.sliding) {
     const double mu_k =
         is_collider(b) ? model_.colliders[collider_index(b)].dynamic_friction : model_.contact.dynamic_friction;
     delta = std::min(needed, std::max(mu_k * contact.lambda_normal - contact.lambda_tangent, 0.0));
@@ -315,7 +386,7 @@ void ContactSolver::solve_velocities() {
   // points below the centre of mass, otherwise leave a resting grain rocking.
   for (const Contact& contact : contacts_) {
     if (contact.lambda_normal == 0.0) continue;
-    const auto [a, b, sa, sb] = candidates_[contact.candidate].key;
+    const auto [a, b, sa, sb] = states_[contact.state].key;
     const ContactPoints p = locate(contact);
     const Vec3 vb = p.b ? velocity_at(model_, *p.b, sb, p.pb) : Vec3((p.pb - p.pb_start) / h_);
     const double vn = p.n.dot(velocity_at(model_, *p.a, sa, p.pa) - vb);
@@ -338,8 +409,8 @@ void ContactSolver::end_substep(bool end_of_interval) {
   // whole slip, from deciding for all.
   double deepest = 0.0;
   for (size_t first = 0; first < contacts_.size();) {
-    const auto& key = candidates_[contacts_[first].candidate].key;
-    const bool sliding = candidates_[contacts_[first].candidate].sliding;
+    const auto& key = states_[contacts_[first].state].key;
+    const bool sliding = states_[contacts_[first].state].sliding;
     const double mu_s = is_collider(key[1]) ? model_.colliders[collider_index(key[1])].static_friction
                                             : model_.contact.static_friction;
     size_t last = first;
@@ -348,14 +419,14 @@ void ContactSolver::end_substep(bool end_of_interval) {
     Vec3 friction = Vec3::Zero();
     for (; last < contacts_.size(); ++last) {
       const Contact& contact = contacts_[last];
-      Candidate& candidate = candidates_[contact.candidate];
-      if (candidate.key[0] != key[0] || candidate.key[1] != key[1]) break;
+      ContactState& state = states_[contact.state];
+      if (state.key[0] != key[0] || state.key[1] != key[1]) break;
       const ContactPoints p = locate(contact);
       deepest = std::max(deepest, -p.n.dot(p.pa - p.pb));
-      candidate.interval_normal += contact.lambda_normal;
-      candidate.interval_friction += contact.friction;
-      normal += candidate.interval_normal;
-      friction += candidate.interval_friction;
+      state.interval_normal += contact.lambda_normal;
+      state.interval_friction += contact.friction;
+      normal += state.interval_normal;
+      friction += state.interval_friction;
       if (contact.lambda_normal == 0.0) continue;
       touching = true;
       stuck = stuck || !contact.capped;
@@ -363,9 +434,9 @@ void ContactSolver::end_substep(bool end_of_interval) {
     const bool slides =
         has_friction_ && touching && (sliding ? !stuck : end_of_interval && friction.norm() > mu_s * normal);
     for (size_t c = first; c < last; ++c) {
-      Candidate& candidate = candidates_[contacts_[c].candidate];
-      candidate.sliding = slides;
-      candidate.anchored = candidate.anchored && !slides && contacts_[c].lambda_normal > 0.0;
+      ContactState& state = states_[contacts_[c].state];
+      state.sliding = slides;
+      state.anchored = state.anchored && !slides && contacts_[c].lambda_normal > 0.0;
     }
     first = last;
   }

@@ -26,6 +26,7 @@
 #include <optional>
 #include <vector>
 
+#include "xpbd/broad_phase.hpp"
 #include "xpbd/cohesion_bonds.hpp"
 #include "xpbd/model.hpp"
 
@@ -63,10 +64,11 @@ class ContactSolver {
   const ContactStatistics& statistics() const { return statistics_; }
 
  private:
-  /// One candidate: sphere s_a of body a against sphere s_b of body b, or against the
-  /// collider collider_index(b) when is_collider(b). Sorted by key, so the candidates of one
-  /// body pair are contiguous. `sliding` persists while the pair stays a candidate.
-  struct Candidate {
+  /// What a sphere pair's contact carries from substep to substep, while its body pair stays
+  /// in the broad phase: sphere s_a of body a against sphere s_b of body b, or against the
+  /// collider collider_index(b) when is_collider(b). Sorted by key, so the states of one body
+  /// pair are contiguous.
+  struct ContactState {
     std::array<int, 4> key;  ///< (a, b, s_a, s_b)
     bool sliding = false;
     bool anchored = false;  ///< sticking, with anchors (material coordinates on a and b)
@@ -74,11 +76,16 @@ class ContactSolver {
     double interval_normal = 0.0;             ///< Σλ_n over the interval's substeps so far
     Vec3 interval_friction = Vec3::Zero();    ///< Σ friction impulses over them
   };
+  /// A body pair from the broad phase (or a body and a collider, b < 0) with its candidate
+  /// sphere pairs (s_a, s_b), sphere_pairs_[first, last), increasing.
+  struct BodyPair {
+    int a, b, first, last;
+  };
   static int collider_key(int collider) { return -1 - collider; }
   static bool is_collider(int b) { return b < 0; }
   static int collider_index(int b) { return -1 - b; }
   struct Contact {
-    int candidate;
+    int state;  ///< index into states_
     Vec3 normal;          ///< world (sphere pair) or collider frame
     Vec3 collider_point;  ///< collider frame: the surface point under the sphere at the start
     double lambda_normal = 0.0, lambda_tangent = 0.0;
@@ -97,15 +104,33 @@ class ContactSolver {
   double inverse_mass(const Contact& contact, const ContactPoints& p, const Vec3& direction) const;
   void push(const Contact& contact, const ContactPoints& p, const Vec3& impulse);
   Vec3 tangential_slip(const Contact& contact, const ContactPoints& p, const Positions& x_previous) const;
-  Vec3 anchored_slip(Candidate& candidate, const ContactPoints& p, const Positions& x_previous) const;
+  Vec3 anchored_slip(ContactState& state, const ContactPoints& p, const Positions& x_previous) const;
+  /// Sphere centres of body b now and at the substep's start (x_previous; null when they are
+  /// the same), with its start box and largest sphere motion. A sleeping body's centres are
+  /// computed once per sleep.
+  void update_centres(int b, const Positions* x_previous);
+  /// False when no sphere pair of the body pair can touch in this substep: the boxes of their
+  /// start spheres are further apart than the two bodies' motion and the margin (the sphere
+  /// test in begin_substep would then skip every one of them).
+  bool may_touch(const BodyPair& pair) const;
+  /// The contacts of one body pair in this substep, in key order; state_of(key) gives each
+  /// its state's index.
+  template <class StateOf>
+  void add_contacts(const BodyPair& pair, StateOf& state_of, std::vector<CohesionBonds::Touch>& touches);
   void project_normal(Contact& contact);
   void project_friction(Contact& contact, const Positions& x_previous);
   void update_bonds();
 
   Model& model_;
-  std::vector<Candidate> candidates_;
+  std::vector<BodyPair> body_pairs_;
+  std::vector<std::array<int, 2>> sphere_pairs_;
+  std::vector<ContactState> states_;
   std::vector<int> sphere_offset_;                ///< first sphere of each body in the arrays below
   std::vector<Vec3> centre_now_, centre_start_;  ///< sphere centres after prediction and at the substep's start
+  std::vector<Box> start_box_;           ///< per body: the box of its spheres at the substep's start
+  std::vector<double> motion_;           ///< per body: its largest sphere-centre motion in the substep
+  std::vector<char> centres_at_rest_;    ///< per body: asleep, with its centres computed
+  std::vector<int> active_bodies_;       ///< bodies with candidates, increasing
   std::vector<Contact> contacts_;
   std::vector<ColliderKeyframe> pose_start_, pose_end_;  ///< collider poses at the substep's ends
   ContactStatistics statistics_;

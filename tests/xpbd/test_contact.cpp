@@ -61,6 +61,24 @@ TEST_P(GrainContact, RestsOnAPlaneWithoutDrift) {
   EXPECT_LT(solver.contacts()->statistics().max_penetration, 0.01 * kGrainThickness);
 }
 
+TEST_P(GrainContact, FallsAsleepOnAColliderAndStaysAsleep) {
+  // A grain at rest on a collider sleeps after SleepSettings::steps quiet steps; being near
+  // a collider at rest must not keep it awake (it did, until the broad phase only woke
+  // sleeping bodies).
+  Model model;
+  const int grain = add_grain(model, GetParam(), Vec3(0.0, 0.0, 1e-4));
+  model.colliders.push_back(half_space(Vec3::UnitZ(), 0.0, 0.5, 0.4));
+  model.sleep.enabled = true;
+  Solver solver(model, scene_settings(GetParam(), 1.0 / 30.0, 80));
+  int steps = 0;
+  for (; steps < 60 && !model.bodies[grain].asleep; ++steps) solver.step();
+  EXPECT_TRUE(model.bodies[grain].asleep) << "awake after " << steps << " frames";
+  const Vec3 asleep_at = body_centre(model, grain);
+  for (int k = 0; k < 30; ++k) solver.step();
+  EXPECT_TRUE(model.bodies[grain].asleep);
+  EXPECT_EQ(body_centre(model, grain), asleep_at);
+}
+
 /// Gravity tilted by θ about y is a plane tilted by θ: the grain sits on z = 0 and is pulled
 /// along +x by g sin θ.
 double slide_after(BodyKind kind, double tan_theta, double mu_s, double mu_k, double seconds, double* acceleration) {
