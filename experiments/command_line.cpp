@@ -119,7 +119,7 @@ struct CommandLine::Commands {
 
   CLI::App* pour_cmd = nullptr;
   PourSettings pour;
-  std::string pour_out = "out/pour", pour_body = "rigid";
+  std::string pour_out = "out/pour", pour_body = "rigid", pour_container = "chawan";
   bool no_cohesion = false, no_sleep = false;
 
   Commands() {
@@ -134,6 +134,9 @@ struct CommandLine::Commands {
   void add_pour() {
     pour_cmd = app.add_subcommand("pour", "grains poured into a chawan: contact, friction, cohesion, sleeping");
     pour_cmd->add_option("--out", pour_out, "output folder")->capture_default_str();
+    pour_cmd->add_option("--container", pour_container, "chawan, or plate: a heap whose angle of repose is measured")
+        ->check(CLI::IsMember({"chawan", "plate"}))
+        ->capture_default_str();
     pour_cmd->add_option("--cultivar", pour.cultivar, "japonica, indica, aromatic or glutinous")->capture_default_str();
     pour_cmd->add_option("--count", pour.count, "grains")->check(number_in(1, 1e5))->capture_default_str();
     pour_cmd->add_option("--variants", pour.variants, "distinct generated grains, instanced")
@@ -143,7 +146,7 @@ struct CommandLine::Commands {
     pour_cmd->add_option("--frames", pour.frames, "frames to simulate")->check(number_in(1, 1e5))->capture_default_str();
     pour_cmd->add_option("--pour-seconds", pour.pour_seconds, "time over which the grains leave the spout [s]")
         ->check(number_in(0, 1e4))->capture_default_str();
-    pour_cmd->add_option("--spout-height", pour.spout_height, "spout above the rim [m]")->check(number_in(0, 10))
+    pour_cmd->add_option("--spout-height", pour.spout_height, "spout above the chawan's rim or the plate [m]")->check(number_in(0, 10))
         ->capture_default_str();
     pour_cmd->add_option("--fps", pour.fps, "frames per second")->check(number_in(0, 1000, Ends::kOpenLow))
         ->capture_default_str();
@@ -172,6 +175,7 @@ struct CommandLine::Commands {
   PourSettings pour_settings() const {
     PourSettings settings = pour;
     settings.body = pour_body == "soft" ? xpbd::BodyKind::kSoft : xpbd::BodyKind::kRigid;
+    settings.container = pour_container == "plate" ? Container::kPlate : Container::kChawan;
     settings.cohesion = !no_cohesion;
     settings.sleeping = !no_sleep;
     return settings;

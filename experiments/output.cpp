@@ -164,6 +164,12 @@ std::string cell(double value) {
 
 std::string cell(long value) { return std::to_string(value); }
 
+std::string fixed(double value, int decimals) {
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, decimals);
+  return std::string(buffer, result.ptr);
+}
+
 Progress::Progress(std::string label, int total)
     : label_(std::move(label)), total_(total), enabled_(isatty(fileno(stderr)) != 0),
       start_(std::chrono::steady_clock::now()) {

@@ -49,6 +49,8 @@ class CsvTable {
 std::string cell(double value);
 std::string cell(long value);
 inline std::string cell(int value) { return cell(static_cast<long>(value)); }
+/// `value` with `decimals` digits after the point, for titles and messages.
+std::string fixed(double value, int decimals);
 
 /// Progress of a long loop: lines "label k/N, ETA" on stderr when stderr is a terminal, and
 /// the activity reported if the run is interrupted (interrupt.hpp). Thread-safe.

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "experiments/angle_of_repose.hpp"
 #include "experiments/collider_grid.hpp"
 #include "experiments/gnuplot.hpp"
 #include "experiments/interrupt.hpp"
@@ -136,17 +137,20 @@ void validate(const PourSettings& s) {
   require(s.spout_height >= 0.0 && s.spout_height <= 10.0, "--spout-height must be in [0, 10] m");
 }
 
-void pour_command(const PourSettings& settings, const std::filesystem::path& folder) {
+PourResult pour_command(const PourSettings& settings, const std::filesystem::path& folder) {
   validate(settings);
   const auto start = std::chrono::steady_clock::now();
   make_output_folder(folder);
   make_output_folder(folder / "frames");
+  const bool plate = settings.container == Container::kPlate;
 
   // The bowl.
   const grains::ChawanShape bowl_shape;
   const grains::SurfaceMesh bowl = grains::make_chawan(bowl_shape);
-  write_file_atomically(folder / "chawan.obj", [&](std::ostream& out) { grains::write_obj(out, bowl); });
-  write_file_atomically(folder / "bowl_outline.csv", bowl_outline(bowl_shape));
+  if (!plate) {
+    write_file_atomically(folder / "chawan.obj", [&](std::ostream& out) { grains::write_obj(out, bowl); });
+    write_file_atomically(folder / "bowl_outline.csv", bowl_outline(bowl_shape));
+  }
 
   // Grains: variants, their spheres, then instances placed on a lattice above the bowl.
   grains::GrainRecipe recipe;
@@ -166,8 +170,10 @@ void pour_command(const PourSettings& settings, const std::filesystem::path& fol
   longest *= recipe.cultivar.swell_max;
   const double inner_radius = bowl_shape.rim_radius - bowl_shape.wall_thickness;
   int per_layer = 0;
-  const std::vector<Vec3> drops = spout_positions(settings.count, 1.05 * longest, 0.6 * inner_radius - longest,
-                                                  bowl_shape.height + settings.spout_height, &per_layer);
+  const std::vector<Vec3> drops =
+      plate ? spout_positions(settings.count, 1.05 * longest, 1.1 * longest, settings.spout_height, &per_layer)
+            : spout_positions(settings.count, 1.05 * longest, 0.6 * inner_radius - longest,
+                              bowl_shape.height + settings.spout_height, &per_layer);
   const int layers = (settings.count + per_layer - 1) / per_layer;
   // Parked layers wait 2 m apart along x, far from the bowl and from each other.
   const auto parking = [&](int g) { return Vec3(2.0 * (1 + g / per_layer), 0.0, 0.0); };
@@ -217,12 +223,16 @@ void pour_command(const PourSettings& settings, const std::filesystem::path& fol
   std::vector<xpbd::Quat> initial_orientation;
   for (const xpbd::RigidBody& rigid : model.rigid_bodies) initial_orientation.push_back(rigid.q());
 
-  xpbd::Collider chawan;
-  chawan.shape = xpbd::ColliderShape::kDistanceGrid;
-  chawan.grid = std::make_shared<const xpbd::DistanceGrid>(distance_grid_of(bowl, settings.grid_spacing, 0.01));
-  chawan.static_friction = settings.static_friction;
-  chawan.dynamic_friction = settings.dynamic_friction;
-  model.colliders.push_back(chawan);
+  xpbd::Collider container;
+  if (plate) {
+    container.shape = xpbd::ColliderShape::kHalfSpace;  // the plane z = 0, normal +z
+  } else {
+    container.shape = xpbd::ColliderShape::kDistanceGrid;
+    container.grid = std::make_shared<const xpbd::DistanceGrid>(distance_grid_of(bowl, settings.grid_spacing, 0.01));
+  }
+  container.static_friction = settings.static_friction;
+  container.dynamic_friction = settings.dynamic_friction;
+  model.colliders.push_back(container);
   const double setup_seconds = seconds_since(start);
 
   xpbd::SolverSettings solver_settings;
@@ -281,12 +291,47 @@ void pour_command(const PourSettings& settings, const std::filesystem::path& fol
   write_file_atomically(folder / "stats.csv", stats.text());
 
   CsvTable final_centres({"grain", "x", "y", "z", "r"});
+  std::vector<Vec3> centres;
   for (int g = 0; g < settings.count; ++g) {
     const Vec3 c = xpbd::body_centre(model, model.bodies[g]);
+    centres.push_back(c);
     final_centres.add_row({cell(g), cell(c.x()), cell(c.y()), cell(c.z()), cell(std::hypot(c.x(), c.y()))});
   }
   write_file_atomically(folder / "final_centres.csv", final_centres.text());
-  render_plot(folder, "pile", R"(set terminal pngcairo size 1200,560
+  PourResult result;
+  result.simulation_seconds = simulation_seconds;
+  result.awake = static_cast<int>(
+      std::count_if(model.bodies.begin(), model.bodies.end(), [](const xpbd::Body& b) { return !b.asleep; }));
+  if (plate) {
+    const HeapProfile heap = heap_profile(centres, 0.5 * longest);
+    result.angle_of_repose_degrees = heap.angle_degrees;
+    result.heap_height = heap.apex_height;
+    CsvTable rings({"radius_m", "height_m", "on_flank"});
+    for (size_t k = 0; k < heap.ring_radius.size(); ++k)
+      rings.add_row({cell(heap.ring_radius[k]), cell(heap.ring_height[k]), cell(heap.on_flank[k] ? 1 : 0)});
+    write_file_atomically(folder / "heap_profile.csv", rings.text());
+    const std::string title = "Angle of repose " + fixed(heap.angle_degrees, 1) + " degrees (" +
+                              (settings.cohesion ? "with" : "without") + " cohesion)";
+    render_plot(folder, "pile", R"(set terminal pngcairo size 1200,560
+set output 'pile.png'
+set datafile separator ','
+set multiplot layout 1,2
+set size ratio -1
+set xlabel 'x [m]'
+set ylabel 'y [m]'
+set title 'The heap from the top (grain centres)'
+plot 'final_centres.csv' using 2:3 with points pt 7 ps 0.5 notitle
+set size noratio
+set xlabel 'distance from the axis [m]'
+set ylabel 'height above the lowest centre [m]'
+set title ')" + title + R"('
+plot 'heap_profile.csv' using 1:($3 == 1 ? $2 : 1/0) with points pt 7 title 'highest centre of a ring: flank', \
+     'heap_profile.csv' using 1:($3 == 0 ? $2 : 1/0) with points pt 6 title 'apex and toe', \
+     )" + cell(heap.intercept) + " + " + cell(heap.slope) + R"(*x with lines lc rgb 'black' title 'least-squares flank'
+unset multiplot
+)");
+  } else {
+    render_plot(folder, "pile", R"(set terminal pngcairo size 1200,560
 set output 'pile.png'
 set datafile separator ','
 set multiplot layout 1,2
@@ -296,7 +341,7 @@ set ylabel 'y [m]'
 set title 'The pile from the top (grain centres; the rim)'
 set parametric
 plot [0:2*pi] )" + cell(bowl_shape.rim_radius) + "*cos(t), " + cell(bowl_shape.rim_radius) +
-                                     R"(*sin(t) with lines lc rgb 'gray' notitle, \
+                                       R"(*sin(t) with lines lc rgb 'gray' notitle, \
      'final_centres.csv' using 2:3 with points pt 7 ps 0.5 notitle
 unset parametric
 set xlabel 'x [m]'
@@ -306,6 +351,7 @@ plot 'bowl_outline.csv' using 1:2 with lines lc rgb 'gray' notitle, \
      'final_centres.csv' using 2:4 with points pt 7 ps 0.5 notitle
 unset multiplot
 )");
+  }
   stop_point();
 
   const xpbd::SolverTimings& t = solver.timings();
@@ -313,9 +359,16 @@ unset multiplot
             << " grains, " << settings.frames << " frames in " << simulation_seconds << " s (broad phase "
             << t.broad_phase << " s, narrow phase " << t.narrow_phase << " s, solves " << t.solve() << " s, sleeping "
             << t.sleeping << " s); set-up " << setup_seconds << " s\n";
+  if (plate)
+    std::cout << "rice pour: angle of repose " << fixed(result.angle_of_repose_degrees, 1) << " degrees, heap "
+              << fixed(1e3 * result.heap_height, 1) << " mm high\n";
   write_file_atomically(
       folder / "run_info.txt",
       run_info({{"command", "pour"},
+                {"container", plate ? "plate" : "chawan"},
+                {"angle_of_repose_deg", plate ? cell(result.angle_of_repose_degrees) : "n/a"},
+                {"heap_height_m", plate ? cell(result.heap_height) : "n/a"},
+                {"awake_at_end", cell(result.awake)},
                 {"cultivar", settings.cultivar},
                 {"count", cell(settings.count)},
                 {"variants", cell(settings.variants)},
@@ -345,6 +398,7 @@ unset multiplot
                                     ? "world = q (p0 - c0) + (x, y, z); c0 the grain's first centre"
                                     : "simulation vertices"},
                 {"wall_s", cell(seconds_since(start))}}));
+  return result;
 }
 
 }  // namespace rice::experiments

@@ -1,11 +1,13 @@
 // The pour scene of issue 10 and the paper's Table 1 (800 japonica grains dropped into a
 // chawan, 180 frames at 30 fps): procedural grains (K variants, instanced with their swell
 // factor and rotation), their collision spheres, rigid or soft bodies, the chawan as a
-// distance-grid collider, friction, water-content cohesion and sleeping. Writes per frame the
-// grains' transforms (rigid) or simulation positions (soft), optionally their deformed render
-// meshes, `stats.csv` (per frame: wall time, awake grains, candidate pairs, contacts, bonds, penetration,
-// kinetic energy, and the time split into broad phase, narrow phase, solves and sleeping),
-// the final pile seen from the top and the side, and run_info.txt.
+// distance-grid collider, friction, water-content cohesion and sleeping. Poured onto a plate
+// instead, the grains form a heap whose angle of repose is measured (angle_of_repose.hpp).
+// Writes per frame the grains' transforms (rigid) or simulation positions (soft), optionally
+// their deformed render meshes, `stats.csv` (per frame: wall time, awake grains, candidate
+// pairs, contacts, bonds, penetration, kinetic energy, and the time split into broad phase,
+// narrow phase, solves and sleeping), the final pile seen from the top and the side, and
+// run_info.txt.
 #pragma once
 
 #include <cstdint>
@@ -16,14 +18,20 @@
 
 namespace rice::experiments {
 
+/// Where the grains fall: into the chawan (grains/chawan.hpp), or onto a flat plate (the
+/// ground plane) from a narrow spout, forming a heap.
+enum class Container { kChawan, kPlate };
+
 struct PourSettings {
+  Container container = Container::kChawan;
   std::string cultivar = "japonica";
   int count = 800;
   int variants = 8;  ///< distinct generated grains, instanced
   xpbd::BodyKind body = xpbd::BodyKind::kRigid;
   int frames = 180;
-  /// Grains leave the spout layer by layer, evenly over this time [s], from
-  /// `spout_height` above the rim; each waits, parked asleep far away, until its layer leaves.
+  /// Grains leave the spout layer by layer, evenly over this time [s], from `spout_height`
+  /// above the chawan's rim or above the plate; each waits, parked asleep far away, until its
+  /// layer leaves. The chawan's spout is 0.6 of its inner radius wide, the plate's one grain.
   double pour_seconds = 1.5;
   double spout_height = 0.02;  ///< [m]
   double fps = 30.0;
@@ -46,7 +54,14 @@ struct PourSettings {
 /// Throws std::invalid_argument naming the setting and its range.
 void validate(const PourSettings& settings);
 
+struct PourResult {
+  double simulation_seconds = 0.0;
+  int awake = 0;  ///< grains awake at the end
+  /// Plate only: the heap's angle of repose [°] and its apex above the lowest centre [m].
+  double angle_of_repose_degrees = 0.0, heap_height = 0.0;
+};
+
 /// Runs the scene and writes its files into `folder`.
-void pour_command(const PourSettings& settings, const std::filesystem::path& folder);
+PourResult pour_command(const PourSettings& settings, const std::filesystem::path& folder);
 
 }  // namespace rice::experiments
