@@ -1,9 +1,13 @@
 // Building soft and rigid bodies and the four contact operations on them; see body.hpp.
 #include "xpbd/body.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
+
+#include <Eigen/Eigenvalues>
 
 #include "xpbd/model.hpp"
 #include "xpbd/tet_stencil.hpp"
@@ -85,6 +89,7 @@ int add_soft_body(Model& model, const TetMesh& mesh, double density, const LameP
     body.anchors.push_back({mesh.T(holder, 0) + offset, mesh.T(holder, 1) + offset, mesh.T(holder, 2) + offset,
                             mesh.T(holder, 3) + offset});
     body.weights.push_back(weights);
+    body.anchor_tets.push_back(static_cast<int>(model.neo_hookean.size() - single.neo_hookean.size()) + holder);
     body.radii.push_back(spheres.radii[s]);
   }
   model.bodies.push_back(std::move(body));
@@ -108,6 +113,18 @@ Vec3 sphere_centre(const Model& model, const Body& body, int s) {
   Vec3 c = Vec3::Zero();
   for (int k = 0; k < 4; ++k) c += body.weights[s][k] * model.particles.x.row(body.anchors[s][k]).transpose();
   return c;
+}
+
+double sphere_radius(const Model& model, const Body& body, int s) {
+  if (body.kind == BodyKind::kRigid) return body.radii[s];
+  const NeoHookeanTet& tet = model.neo_hookean[body.anchor_tets[s]];
+  const auto& x = model.particles.x;
+  const auto corner = [&](int k) -> Vec3 { return x.row(tet.particles[k]).transpose(); };
+  const Mat3 F = edge_matrix(corner(0), corner(1), corner(2), corner(3)) * tet.Dm_inv;
+  // σ_min² is the smallest eigenvalue of FᵀF (closed form for a symmetric 3 × 3).
+  Eigen::SelfAdjointEigenSolver<Mat3> eigen;
+  eigen.computeDirect(F.transpose() * F, Eigen::EigenvaluesOnly);
+  return body.radii[s] * std::min(1.0, std::sqrt(std::max(0.0, eigen.eigenvalues()(0))));
 }
 
 Vec3 previous_point(const Model& model, const Body& body, int s, const Vec3& point, const Positions& x_previous) {

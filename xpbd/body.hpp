@@ -39,9 +39,11 @@ struct Body {
   bool moving = false;  ///< faster than the sleep speed over the last step (it wakes neighbours)
   /// Rigid: sphere centres in the body frame.
   std::vector<Vec3> local_centres;
-  /// Soft: each centre as Σ weights[k] x[anchors[k]] over the corners of the tet holding it.
+  /// Soft: each centre as Σ weights[k] x[anchors[k]] over the corners of the tet holding it,
+  /// that tet's index in Model::neo_hookean.
   std::vector<std::array<int, 4>> anchors;
   std::vector<Eigen::Vector4d> weights;
+  std::vector<int> anchor_tets;
   int sphere_count() const { return static_cast<int>(radii.size()); }
 };
 
@@ -71,6 +73,11 @@ double reach(const Body& body);
 /// The operations contact needs, for either kind of body. `point` is a world point attached
 /// to sphere s (a contact point on its surface).
 Vec3 sphere_centre(const Model& model, const Body& body, int s);
+/// Rigid: radii[s]. Soft: radii[s] times the smallest principal stretch σ_min of the tet
+/// holding the centre, capped at 1, so a grain pressed thinner has thinner spheres; with
+/// radii that kept their size, a stack of grains could not be compressed below the sum of
+/// its sphere diameters without overlapping.
+double sphere_radius(const Model& model, const Body& body, int s);
 /// Where the material point now at `point` was at the start of the substep.
 Vec3 previous_point(const Model& model, const Body& body, int s, const Vec3& point,
                     const Positions& x_previous);

@@ -50,6 +50,7 @@ ContactSolver::ContactSolver(Model& model) : model_(model) {
   for (const Body& body : model.bodies) sphere_offset_.push_back(sphere_offset_.back() + body.sphere_count());
   centre_now_.resize(sphere_offset_.back());
   centre_start_.resize(sphere_offset_.back());
+  radius_.resize(sphere_offset_.back());
   start_box_.resize(model.bodies.size());
   motion_.assign(model.bodies.size(), 0.0);
   centres_at_rest_.assign(model.bodies.size(), 0);
@@ -88,7 +89,7 @@ void ContactSolver::find_candidates(double time, double span) {
     near.clear();
     for (int s = 0; s < bodies[body].sphere_count(); ++s) {
       const Vec3& c = centre_now_[sphere_offset_[body] + s];
-      if ((c - c.cwiseMax(other.lower).cwiseMin(other.upper)).norm() - bodies[body].radii[s] < reach) near.push_back(s);
+      if ((c - c.cwiseMax(other.lower).cwiseMin(other.upper)).norm() - radius(body, s) < reach) near.push_back(s);
     }
   };
   for (const auto& [a, b] : pairs) {
@@ -101,7 +102,7 @@ void ContactSolver::find_candidates(double time, double span) {
     for (const int sa : near_a)
       for (const int sb : near_b) {
         const Vec3 d = centre_now_[sphere_offset_[a] + sa] - centre_now_[sphere_offset_[b] + sb];
-        if (d.norm() - bodies[a].radii[sa] - bodies[b].radii[sb] < reach) sphere_pairs_.push_back({sa, sb});
+        if (d.norm() - radius(a, sa) - radius(b, sb) < reach) sphere_pairs_.push_back({sa, sb});
       }
     if (static_cast<int>(sphere_pairs_.size()) > first) found.push_back({a, b, first, static_cast<int>(sphere_pairs_.size())});
   }
@@ -116,7 +117,8 @@ void ContactSolver::find_candidates(double time, double span) {
         const Vec3& centre = centre_now_[sphere_offset_[b] + s];
         const Vec3 local = to_local(start, centre);
         const double reach = pad[b] + (to_world(end, local) - centre).norm();
-        if (local_signed_distance(collider, local).distance - bodies[b].radii[s] < reach) sphere_pairs_.push_back({s, 0});
+        if (local_signed_distance(collider, local).distance - radius(static_cast<int>(b), s) < reach)
+          sphere_pairs_.push_back({s, 0});
       }
       if (static_cast<int>(sphere_pairs_.size()) == first) continue;
       found.push_back({static_cast<int>(b), collider_key(static_cast<int>(c)), first, static_cast<int>(sphere_pairs_.size())});
@@ -159,10 +161,11 @@ void ContactSolver::update_centres(int b, const Positions* x_previous) {
   for (int s = 0; s < body.sphere_count(); ++s) {
     const int k = sphere_offset_[b] + s;
     centre_now_[k] = sphere_centre(model_, body, s);
+    radius_[k] = sphere_radius(model_, body, s);
     centre_start_[k] = x_previous && !body.asleep ? previous_point(model_, body, s, centre_now_[k], *x_previous)
                                                    : centre_now_[k];
-    box.lower = box.lower.cwiseMin(centre_start_[k] - Vec3::Constant(body.radii[s]));
-    box.upper = box.upper.cwiseMax(centre_start_[k] + Vec3::Constant(body.radii[s]));
+    box.lower = box.lower.cwiseMin(centre_start_[k] - Vec3::Constant(radius_[k]));
+    box.upper = box.upper.cwiseMax(centre_start_[k] + Vec3::Constant(radius_[k]));
     motion = std::max(motion, (centre_now_[k] - centre_start_[k]).norm());
   }
   start_box_[b] = box;
@@ -239,7 +242,6 @@ void ContactSolver::add_contacts(const BodyPair& pair, StateOf& state_of, std::v
   // A contact for every sphere pair whose gap at the substep's start is smaller than the
   // distance its two sides move in the substep and the margin.
   const double margin = model_.contact.margin;
-  const Body& body_a = model_.bodies[pair.a];
   const auto now = [&](int body, int s) -> const Vec3& { return centre_now_[sphere_offset_[body] + s]; };
   const auto start = [&](int body, int s) -> const Vec3& { return centre_start_[sphere_offset_[body] + s]; };
   if (is_collider(pair.b)) {
@@ -251,24 +253,23 @@ void ContactSolver::add_contacts(const BodyPair& pair, StateOf& state_of, std::v
       const SignedDistance sd = local_signed_distance(collider, local);
       const double moved =
           (now(pair.a, sa) - start(pair.a, sa)).norm() + (to_world(pose_end_[k], local) - start(pair.a, sa)).norm();
-      if (sd.distance - body_a.radii[sa] >= moved + margin) continue;
+      if (sd.distance - radius(pair.a, sa) >= moved + margin) continue;
       contacts_.push_back({state_of({pair.a, pair.b, sa, 0}), sd.normal, local - sd.distance * sd.normal});
     }
     return;
   }
-  const Body& body_b = model_.bodies[pair.b];
   for (int i = pair.first; i < pair.last; ++i) {
     const auto [sa, sb] = sphere_pairs_[i];
     const Vec3 d = start(pair.a, sa) - start(pair.b, sb);
     const double distance = d.norm();
-    const double gap = distance - body_a.radii[sa] - body_b.radii[sb];
+    const double gap = distance - radius(pair.a, sa) - radius(pair.b, sb);
     if (gap >= (now(pair.a, sa) - start(pair.a, sa)).norm() + (now(pair.b, sb) - start(pair.b, sb)).norm() + margin)
       continue;
     const Vec3 normal = distance > 0.0 ? Vec3(d / distance) : Vec3::UnitZ();
     const std::array<int, 4> key{pair.a, pair.b, sa, sb};
     contacts_.push_back({state_of(key), normal, Vec3::Zero()});
     if (bonds_ && gap <= model_.contact.bond_distance)
-      touches.push_back({key, start(pair.a, sa) - body_a.radii[sa] * normal, start(pair.b, sb) + body_b.radii[sb] * normal});
+      touches.push_back({key, start(pair.a, sa) - radius(pair.a, sa) * normal, start(pair.b, sb) + radius(pair.b, sb) * normal});
   }
 }
 
@@ -294,9 +295,9 @@ ContactSolver::ContactPoints ContactSolver::locate(const Contact& contact) const
   } else {
     p.b = &model_.bodies[b];
     p.n = contact.normal;
-    p.pb = sphere_centre(model_, *p.b, sb) + p.b->radii[sb] * p.n;
+    p.pb = sphere_centre(model_, *p.b, sb) + radius(b, sb) * p.n;
   }
-  p.pa = ca - p.a->radii[sa] * p.n;
+  p.pa = ca - radius(a, sa) * p.n;
   return p;
 }
 

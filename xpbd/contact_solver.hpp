@@ -106,7 +106,7 @@ class ContactSolver {
   Vec3 tangential_slip(const Contact& contact, const ContactPoints& p, const Positions& x_previous) const;
   Vec3 anchored_slip(ContactState& state, const ContactPoints& p, const Positions& x_previous) const;
   /// Sphere centres of body b now and at the substep's start (x_previous; null when they are
-  /// the same), with its start box and largest sphere motion. A sleeping body's centres are
+  /// the same) and radii, with its start box and largest sphere motion. A sleeping body's centres are
   /// computed once per sleep.
   void update_centres(int b, const Positions* x_previous);
   /// False when no sphere pair of the body pair can touch in this substep: the boxes of their
@@ -127,6 +127,8 @@ class ContactSolver {
   std::vector<ContactState> states_;
   std::vector<int> sphere_offset_;                ///< first sphere of each body in the arrays below
   std::vector<Vec3> centre_now_, centre_start_;  ///< sphere centres after prediction and at the substep's start
+  std::vector<double> radius_;  ///< sphere radii (sphere_radius), fixed over a substep
+  double radius(int body, int s) const { return radius_[sphere_offset_[body] + s]; }
   std::vector<Box> start_box_;           ///< per body: the box of its spheres at the substep's start
   std::vector<double> motion_;           ///< per body: its largest sphere-centre motion in the substep
   std::vector<char> centres_at_rest_;    ///< per body: asleep, with its centres computed

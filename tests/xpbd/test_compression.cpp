@@ -1,0 +1,127 @@
+// Stability under load (issue 10): 500 soft grains settled in a box are pressed by a moving
+// plate to 60% of their free height, held, and released. Every position stays finite, no tet
+// is left inverted once the plate has retreated, and no grain ends inside another.
+//
+// KNOWN FAILURE, disabled until fixed (issue 10 stays open): positions stay finite and, since
+// soft spheres shrink with their tet (sphere_radius), no tet is left inverted; but the plate
+// gets no nearer than 63% (its contacts give 0.7 mm under the load of 13 layers solved by one
+// Gauss–Seidel sweep a substep), and grains of the top layers are pushed into the layer below
+// while the plate presses: after it retreats two spheres of different grains still overlap by
+// 0.78 mm (39% of the thickness), their centres side by side, so contact pushes them sideways
+// and cannot separate them. Before the spheres shrank: 1.9 mm and an inverted tet. It also
+// takes 17 s in Release, too long for the suite.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "tests/xpbd/grain_fixtures.hpp"
+#include "xpbd/contact_solver.hpp"
+#include "xpbd/solver.hpp"
+#include "xpbd/tet_stencil.hpp"
+
+namespace rice::xpbd {
+namespace {
+
+using namespace testing;
+
+constexpr double kHalfWidth = 0.018;  // a 3.6 cm square box
+
+/// 500 soft grains, 40 a layer (4 along x, 10 along y) in 13 layers 2.5 mm apart, each turned
+/// a little about the vertical so the layers do not stack in columns.
+Model boxed_grains() {
+  Model model;
+  model.contact.static_friction = 0.5;
+  model.contact.dynamic_friction = 0.4;
+  model.colliders.push_back(half_space(Vec3::UnitZ(), 0.0, 0.5, 0.4));
+  for (const Vec3& n : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0)})
+    model.colliders.push_back(half_space(n, -kHalfWidth, 0.3, 0.2));
+  for (int k = 0; k < 500; ++k) {
+    const int layer = k / 40, i = k % 4, j = (k / 4) % 10;
+    const Vec3 corner(-0.0165 + 0.0085 * i + 4e-4 * (layer % 2), -0.0175 + 0.0035 * j, 2e-4 + 0.0025 * layer);
+    const int b = add_grain(model, BodyKind::kSoft, corner);
+    // A turn of up to ±3° about the grain's centre, different for every grain.
+    const Vec3 centre = corner + 0.5 * Vec3(kGrainLength, kGrainWidth, kGrainThickness);
+    const Mat3 turn = Eigen::AngleAxisd(0.05 * std::sin(1.7 * k), Vec3::UnitZ()).toRotationMatrix();
+    const Body& body = model.bodies[b];
+    auto x = model.particles.x.middleRows(body.first_particle, body.particle_count);
+    x = ((x.rowwise() - centre.transpose()) * turn.transpose()).rowwise() + centre.transpose();
+  }
+  return model;
+}
+
+double top_of_grains(const Model& model) {
+  double top = -INFINITY;
+  for (const Body& body : model.bodies)
+    for (int s = 0; s < body.sphere_count(); ++s)
+      top = std::max(top, sphere_centre(model, body, s).z() + sphere_radius(model, body, s));
+  return top;
+}
+
+double smallest_tet_volume(const Model& model) {
+  double smallest = INFINITY;
+  for (const NeoHookeanTet& t : model.neo_hookean) {
+    Vec12 x;
+    for (int k = 0; k < 4; ++k) x.segment<3>(3 * k) = model.particles.x.row(t.particles[k]).transpose();
+    smallest = std::min(smallest, signed_volume(x));
+  }
+  return smallest;
+}
+
+/// Deepest overlap of two spheres of different grains, over all pairs.
+double deepest_overlap(const Model& model) {
+  std::vector<Vec3> centre;
+  std::vector<double> radius;
+  std::vector<int> owner;
+  for (size_t b = 0; b < model.bodies.size(); ++b)
+    for (int s = 0; s < model.bodies[b].sphere_count(); ++s) {
+      centre.push_back(sphere_centre(model, model.bodies[b], s));
+      radius.push_back(sphere_radius(model, model.bodies[b], s));
+      owner.push_back(static_cast<int>(b));
+    }
+  double deepest = 0.0;
+  for (size_t i = 0; i < centre.size(); ++i)
+    for (size_t j = i + 1; j < centre.size(); ++j)
+      if (owner[i] != owner[j]) deepest = std::max(deepest, radius[i] + radius[j] - (centre[i] - centre[j]).norm());
+  return deepest;
+}
+
+TEST(Compression, DISABLED_FiveHundredSoftGrainsPressedTo60PercentRecoverWithoutInversionOrInterpenetration) {
+  Model model = boxed_grains();
+  // The plate: solid above its plane (normal −z), parked 1 m up while the grains settle.
+  model.colliders.push_back(half_space(-Vec3::UnitZ(), -1.0, 0.5, 0.4));
+  SolverSettings settings;
+  settings.time_step = 1.0 / 300.0;
+  settings.substeps = 23;  // h = 1.45e-4 s, under the Neo-Hookean pair's limit (README "Known limits")
+  settings.iterations = 1;
+  Solver solver(model, settings);
+  for (int step = 0; step < 30; ++step) solver.step();  // 0.1 s: the layers settle
+  const double free_height = top_of_grains(model);
+  ASSERT_GT(free_height, 0.02);
+
+  // From the top down to 60% in 50 ms, held for 20 ms, back up in 50 ms.
+  const double t0 = solver.time();
+  const auto at = [&](double t, double height) {
+    ColliderKeyframe key = model.colliders.back().motion[0];
+    key.time = t;
+    key.translation = Vec3(0.0, 0.0, height);
+    return key;
+  };
+  model.colliders.back().motion = {at(t0, free_height), at(t0 + 0.05, 0.6 * free_height),
+                                   at(t0 + 0.07, 0.6 * free_height), at(t0 + 0.12, 1.2 * free_height)};
+  double lowest_top = INFINITY, smallest_volume_under_load = INFINITY;
+  while (solver.time() < t0 + 0.19) {
+    solver.step();
+    ASSERT_TRUE(model.particles.x.allFinite()) << "at t = " << solver.time();
+    lowest_top = std::min(lowest_top, top_of_grains(model));
+    smallest_volume_under_load = std::min(smallest_volume_under_load, smallest_tet_volume(model));
+  }
+  EXPECT_LT(lowest_top, 0.62 * free_height);  // the plate did press the grains
+  EXPECT_GT(smallest_tet_volume(model), 0.0);
+  EXPECT_LT(deepest_overlap(model), 0.25 * kGrainThickness);
+  RecordProperty("free_height_m", std::to_string(free_height));
+  RecordProperty("smallest_tet_volume_under_load_m3", std::to_string(smallest_volume_under_load));
+  RecordProperty("deepest_overlap_after_m", std::to_string(deepest_overlap(model)));
+}
+
+}  // namespace
+}  // namespace rice::xpbd
