@@ -23,6 +23,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -105,6 +106,11 @@ class ContactSolver {
   void push(const Contact& contact, const ContactPoints& p, const Vec3& impulse);
   Vec3 tangential_slip(const Contact& contact, const ContactPoints& p, const Positions& x_previous) const;
   Vec3 anchored_slip(ContactState& state, const ContactPoints& p, const Positions& x_previous) const;
+  /// How far any point of body b can move in `span` seconds from `time`, with leeway for what
+  /// contacts add: 1.5 s span + ½ |g| span², s the speed of its fastest point (rigid:
+  /// |v| + |ω| r_max; soft: of its sphere centres since the last broad phase, at the first the
+  /// fastest particle's). A sleeping body does not move.
+  double motion_bound(int b, double time, double span) const;
   /// Sphere centres of body b now and at the substep's start (x_previous; null when they are
   /// the same) and radii, with its start box and largest sphere motion. A sleeping body's centres are
   /// computed once per sleep.
@@ -127,6 +133,8 @@ class ContactSolver {
   std::vector<ContactState> states_;
   std::vector<int> sphere_offset_;                ///< first sphere of each body in the arrays below
   std::vector<Vec3> centre_now_, centre_start_;  ///< sphere centres after prediction and at the substep's start
+  std::vector<Vec3> centre_at_broad_phase_;  ///< sphere centres at the last broad phase
+  double broad_phase_time_ = INFINITY;        ///< its time (none yet: ∞)
   std::vector<double> radius_;  ///< sphere radii (sphere_radius), fixed over a substep
   double radius(int body, int s) const { return radius_[sphere_offset_[body] + s]; }
   std::vector<Box> start_box_;           ///< per body: the box of its spheres at the substep's start
