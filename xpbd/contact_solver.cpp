@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <tbb/parallel_for.h>
+
 #include "xpbd/broad_phase.hpp"
 #include "xpbd/sleeping.hpp"
 
@@ -19,7 +21,7 @@ Vec3 to_local(const ColliderKeyframe& pose, const Vec3& world) {
 
 }  // namespace
 
-ContactSolver::ContactSolver(Model& model) : model_(model) {
+ContactSolver::ContactSolver(Model& model, bool parallel) : model_(model), parallel_(parallel) {
   const ContactSettings& s = model.contact;
   if (!(s.static_friction >= 0.0 && s.dynamic_friction >= 0.0 && s.dynamic_friction <= s.static_friction))
     throw std::invalid_argument("contact: need 0 <= dynamic friction <= static friction between grains");
@@ -49,8 +51,8 @@ void ContactSolver::find_candidates(double time, double span) {
   const double margin = model_.contact.margin;
   std::vector<double> pad(bodies.size());
   std::vector<Box> boxes(bodies.size());
+  for_each_body(static_cast<int>(bodies.size()), [&](int b) { update_centres(b, nullptr); });
   for (size_t b = 0; b < bodies.size(); ++b) {
-    update_centres(static_cast<int>(b), nullptr);
     pad[b] = motion_bound(static_cast<int>(b), time, span) + margin;
     boxes[b] = {start_box_[b].lower - Vec3::Constant(pad[b]), start_box_[b].upper + Vec3::Constant(pad[b])};
   }
@@ -138,6 +140,17 @@ void ContactSolver::find_candidates(double time, double span) {
   active_bodies_.erase(std::unique(active_bodies_.begin(), active_bodies_.end()), active_bodies_.end());
 }
 
+template <class Function>
+void ContactSolver::for_each_body(int count, const Function& function) const {
+  if (!parallel_) {
+    for (int k = 0; k < count; ++k) function(k);
+    return;
+  }
+  tbb::parallel_for(tbb::blocked_range<int>(0, count, 64), [&](const tbb::blocked_range<int>& range) {
+    for (int k = range.begin(); k < range.end(); ++k) function(k);
+  });
+}
+
 double ContactSolver::motion_bound(int b, double time, double span) const {
   const Body& body = model_.bodies[b];
   if (body.asleep) return 0.0;
@@ -217,7 +230,8 @@ void ContactSolver::begin_substep(double time, double h, const Positions& x_prev
   }
   // The sphere centres of every body with candidates, now (after prediction) and at the
   // substep's start, once.
-  for (const int b : active_bodies_) update_centres(b, &x_previous);
+  for_each_body(static_cast<int>(active_bodies_.size()),
+                [&](int k) { update_centres(active_bodies_[k], &x_previous); });
   // Contacts come out in key order, so the states of the last substep are merged in one pass;
   // a state whose spheres do not touch in this substep loses its anchors.
   std::vector<ContactState> previous = std::move(states_);

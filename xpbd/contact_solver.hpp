@@ -43,8 +43,9 @@ struct ContactStatistics {
 
 class ContactSolver {
  public:
-  /// Validates the colliders and the contact settings (std::invalid_argument).
-  explicit ContactSolver(Model& model);
+  /// Validates the colliders and the contact settings (std::invalid_argument). `parallel`:
+  /// per-body work (sphere centres) runs on TBB's threads; the results do not depend on it.
+  explicit ContactSolver(Model& model, bool parallel = false);
 
   /// Broad phase for the interval [time, time + span] of one or more substeps; call before
   /// their prediction.
@@ -111,6 +112,9 @@ class ContactSolver {
   /// |v| + |ω| r_max; soft: of its sphere centres since the last broad phase, at the first the
   /// fastest particle's). A sleeping body does not move.
   double motion_bound(int b, double time, double span) const;
+  /// function(k) for k in [0, count), on TBB's threads when parallel_.
+  template <class Function>
+  void for_each_body(int count, const Function& function) const;
   /// Sphere centres of body b now and at the substep's start (x_previous; null when they are
   /// the same) and radii, with its start box and largest sphere motion. A sleeping body's centres are
   /// computed once per sleep.
@@ -128,6 +132,7 @@ class ContactSolver {
   void update_bonds();
 
   Model& model_;
+  bool parallel_;
   std::vector<BodyPair> body_pairs_;
   std::vector<std::array<int, 2>> sphere_pairs_;
   std::vector<ContactState> states_;
