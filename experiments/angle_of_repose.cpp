@@ -10,16 +10,21 @@ namespace rice::experiments {
 HeapProfile heap_profile(const std::vector<xpbd::Vec3>& centres, double ring_width) {
   if (!(ring_width > 0.0)) throw std::invalid_argument("heap profile: the ring width must be > 0");
   if (centres.empty()) throw std::invalid_argument("heap profile: no grains");
-  xpbd::Vec3 mean = xpbd::Vec3::Zero();
+  // The axis through the median x and y: grains that rolled far away do not move it.
+  std::vector<double> xs, ys;
   double lowest = INFINITY;
   for (const xpbd::Vec3& c : centres) {
-    mean += c / static_cast<double>(centres.size());
+    xs.push_back(c.x());
+    ys.push_back(c.y());
     lowest = std::min(lowest, c.z());
   }
+  std::nth_element(xs.begin(), xs.begin() + xs.size() / 2, xs.end());
+  std::nth_element(ys.begin(), ys.begin() + ys.size() / 2, ys.end());
+  const xpbd::Vec3 axis(xs[xs.size() / 2], ys[ys.size() / 2], 0.0);
   // The highest centre of each ring.
   std::vector<double> radius, height;
   for (const xpbd::Vec3& c : centres) {
-    const double r = std::hypot(c.x() - mean.x(), c.y() - mean.y());
+    const double r = std::hypot(c.x() - axis.x(), c.y() - axis.y());
     const size_t ring = static_cast<size_t>(r / ring_width);
     if (ring >= height.size()) {
       height.resize(ring + 1, -INFINITY);

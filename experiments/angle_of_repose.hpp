@@ -1,5 +1,5 @@
 // The angle of repose of a heap of grains on a flat floor, from the grains' centres: the
-// heap's axis is the mean centre in x and y; the ground ring of width `ring_width` at
+// heap's axis passes through the median centre in x and y; the ground ring of width `ring_width` at
 // distance r from the axis is as high as its highest centre; the angle is the slope of the
 // least-squares line through the rings whose heights lie between 15% and 85% of the apex
 // above the lowest centre, which leaves out the rounded apex and the toe of single grains

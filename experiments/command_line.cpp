@@ -20,6 +20,7 @@
 #include "experiments/interrupt.hpp"
 #include "experiments/oscillator_study.hpp"
 #include "experiments/pour_scene.hpp"
+#include "experiments/pour_substep_study.hpp"
 #include "experiments/water_absorption_figure.hpp"
 #include "experiments/xpbd_stiffness_study.hpp"
 #include "grains/cultivar.hpp"
@@ -91,6 +92,10 @@ struct CommandLine::Commands {
   int threads = 0;
 
   CLI::App* stiffness_cmd = nullptr;
+  CLI::App* pour_substeps_cmd = nullptr;
+  PourSubstepStudySettings pour_substeps;
+  std::string pour_substeps_out = "out/pour-substeps", pour_substeps_body = "rigid";
+  bool pour_substeps_no_cohesion = false;
   StiffnessStudySettings stiffness;
   std::string stiffness_out = "out/xpbd-stiffness";
 
@@ -150,7 +155,8 @@ struct CommandLine::Commands {
         ->capture_default_str();
     pour_cmd->add_option("--fps", pour.fps, "frames per second")->check(number_in(0, 1000, Ends::kOpenLow))
         ->capture_default_str();
-    pour_cmd->add_option("--substeps", pour.substeps, "substeps per frame")->check(number_in(1, 1e4))
+    pour_cmd->add_option("--substeps", pour.substeps, "substeps per frame; 0: 80 rigid, 480 soft")
+        ->check(number_in(0, 1e4))
         ->capture_default_str();
     pour_cmd->add_option("--iterations", pour.iterations, "Gauss-Seidel sweeps per substep")
         ->check(number_in(1, 1000))->capture_default_str();
@@ -172,6 +178,13 @@ struct CommandLine::Commands {
     pour_cmd->add_flag("--render-meshes", pour.render_meshes, "also write each frame's render meshes (PLY, large)");
   }
 
+  PourSubstepStudySettings pour_substeps_settings() const {
+    PourSubstepStudySettings settings = pour_substeps;
+    settings.pour.body = pour_substeps_body == "soft" ? xpbd::BodyKind::kSoft : xpbd::BodyKind::kRigid;
+    settings.pour.cohesion = !pour_substeps_no_cohesion;
+    return settings;
+  }
+
   PourSettings pour_settings() const {
     PourSettings settings = pour;
     settings.body = pour_body == "soft" ? xpbd::BodyKind::kSoft : xpbd::BodyKind::kRigid;
@@ -184,6 +197,18 @@ struct CommandLine::Commands {
   void add_studies() {
     CLI::App* study = app.add_subcommand("study", "convergence, stiffness and validation studies");
     study->require_subcommand(1);
+
+    pour_substeps_cmd = study->add_subcommand("pour-substeps", "the pour's overlaps against wall time over substeps");
+    pour_substeps_cmd->add_option("--out", pour_substeps_out, "output folder")->capture_default_str();
+    pour_substeps_cmd->add_option("--substeps", pour_substeps.substeps, "substep counts per frame")
+        ->check(number_in(1, 1e4))->capture_default_str();
+    pour_substeps_cmd->add_option("--count", pour_substeps.pour.count, "grains")->check(number_in(1, 1e5))
+        ->capture_default_str();
+    pour_substeps_cmd->add_option("--frames", pour_substeps.pour.frames, "frames")->check(number_in(1, 1e5))
+        ->capture_default_str();
+    pour_substeps_cmd->add_option("--body", pour_substeps_body, "rigid or soft")
+        ->check(CLI::IsMember({"rigid", "soft"}))->capture_default_str();
+    pour_substeps_cmd->add_flag("--no-cohesion", pour_substeps_no_cohesion, "no water-content bonds");
 
     stiffness_cmd = study->add_subcommand("xpbd-stiffness",
                                           "cantilever rest deflection vs iteration count, XPBD against PBD");
@@ -346,11 +371,13 @@ void CommandLine::validate() const {
   if (*c.grains_cmd) experiments::validate(c.grain_library_settings());
   if (*c.figure11_cmd) experiments::validate(c.absorption);
   if (*c.pour_cmd) experiments::validate(c.pour_settings());
+  if (*c.pour_substeps_cmd) experiments::validate(c.pour_substeps_settings());
 }
 
 void CommandLine::run() const {
   const Commands& c = *commands_;
   if (*c.stiffness_cmd) stiffness_study_command(c.stiffness, c.stiffness_out);
+  if (*c.pour_substeps_cmd) pour_substep_study_command(c.pour_substeps_settings(), c.pour_substeps_out);
   if (*c.oscillator_cmd) oscillator_study_command(c.oscillator, c.oscillator_out);
   if (*c.convergence_cmd) convergence_study_command(c.convergence_settings(), c.convergence_out);
   if (*c.grains_cmd) grain_library_command(c.grain_library_settings(), c.library_out);

@@ -122,7 +122,7 @@ void validate(const PourSettings& s) {
   require(s.variants >= 1 && s.variants <= 1000, "--variants must be in [1, 1000]");
   require(s.frames >= 1 && s.frames <= 100000, "--frames must be in [1, 100000]");
   require(s.fps > 0.0 && s.fps <= 1000.0, "--fps must be in (0, 1000]");
-  require(s.substeps >= 1 && s.substeps <= 10000, "--substeps must be in [1, 10000]");
+  require(s.substeps >= 0 && s.substeps <= 10000, "--substeps must be in [0, 10000] (0: by body kind)");
   require(s.iterations >= 1 && s.iterations <= 1000, "--iterations must be in [1, 1000]");
   require(s.young >= 1e3 && s.young <= 1e9, "--young must be in [1e3, 1e9] Pa");
   require(s.poisson > -1.0 && s.poisson < 0.5, "Poisson's ratio must be in (-1, 0.5)");
@@ -137,20 +137,16 @@ void validate(const PourSettings& s) {
   require(s.spout_height >= 0.0 && s.spout_height <= 10.0, "--spout-height must be in [0, 10] m");
 }
 
+int substeps_per_frame(const PourSettings& settings) {
+  if (settings.substeps > 0) return settings.substeps;
+  return settings.body == xpbd::BodyKind::kRigid ? 80 : 480;
+}
+
 PourResult pour_command(const PourSettings& settings, const std::filesystem::path& folder) {
   validate(settings);
   const auto start = std::chrono::steady_clock::now();
-  make_output_folder(folder);
-  make_output_folder(folder / "frames");
   const bool plate = settings.container == Container::kPlate;
-
-  // The bowl.
   const grains::ChawanShape bowl_shape;
-  const grains::SurfaceMesh bowl = grains::make_chawan(bowl_shape);
-  if (!plate) {
-    write_file_atomically(folder / "chawan.obj", [&](std::ostream& out) { grains::write_obj(out, bowl); });
-    write_file_atomically(folder / "bowl_outline.csv", bowl_outline(bowl_shape));
-  }
 
   // Grains: variants, their spheres, then instances placed on a lattice above the bowl.
   grains::GrainRecipe recipe;
@@ -175,6 +171,22 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
             : spout_positions(settings.count, 1.05 * longest, 0.6 * inner_radius - longest,
                               bowl_shape.height + settings.spout_height, &per_layer);
   const int layers = (settings.count + per_layer - 1) / per_layer;
+  // A layer must have fallen clear of the spout, 1.05 grain lengths from rest, before the next
+  // leaves: else grains are released inside each other.
+  const double clear_seconds = std::sqrt(2.0 * 1.05 * longest / 9.81);
+  if (layers > 1 && settings.pour_seconds / layers < clear_seconds)
+    throw std::invalid_argument("pour: " + std::to_string(layers) + " layers of " + std::to_string(per_layer) +
+                                " grains leave the spout " + fixed(1e3 * settings.pour_seconds / layers, 1) +
+                                " ms apart, sooner than one falls clear of the next (" +
+                                fixed(1e3 * clear_seconds, 1) + " ms): raise --pour-seconds to at least " +
+                                fixed(layers * clear_seconds, 2));
+  make_output_folder(folder);
+  make_output_folder(folder / "frames");
+  const grains::SurfaceMesh bowl = grains::make_chawan(bowl_shape);
+  if (!plate) {
+    write_file_atomically(folder / "chawan.obj", [&](std::ostream& out) { grains::write_obj(out, bowl); });
+    write_file_atomically(folder / "bowl_outline.csv", bowl_outline(bowl_shape));
+  }
   // Parked layers wait 2 m apart along x, far from the bowl and from each other.
   const auto parking = [&](int g) { return Vec3(2.0 * (1 + g / per_layer), 0.0, 0.0); };
 
@@ -207,17 +219,32 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   }
   std::vector<Vec3> initial_centre(settings.count);
   for (int g = 0; g < settings.count; ++g) initial_centre[g] = xpbd::body_centre(model, model.bodies[g]) - parking(g);
-  // Moves a parked grain to the spout and wakes it.
-  const auto release = [&](int g) {
+  // Moves a parked grain to the spout, raised by `lift`, and wakes it.
+  const auto release = [&](int g, double lift) {
+    const Vec3 move = Vec3(0.0, 0.0, lift) - parking(g);
     xpbd::Body& body = model.bodies[g];
     if (body.kind == xpbd::BodyKind::kRigid) {
       xpbd::RigidBody& rigid = model.rigid_bodies[body.rigid_body];
-      rigid.x -= parking(g);
+      rigid.x += move;
       rigid.remember_pose();
     } else {
-      model.particles.x.middleRows(body.first_particle, body.particle_count).rowwise() -= parking(g).transpose();
+      model.particles.x.middleRows(body.first_particle, body.particle_count).rowwise() += move.transpose();
     }
     xpbd::wake(body);
+  };
+  // A heap that grew up to the spout (sticky grains can build a column) would have new grains
+  // released inside it: the spout then rises to keep a grain length and a half above the top
+  // of the grains that have landed (slower than 0.1 m/s; a grain falls faster 10 ms after its
+  // release, and layers leave at least 20 ms apart).
+  const auto speed = [&](const xpbd::Body& body) {
+    if (body.kind == xpbd::BodyKind::kRigid) return model.rigid_bodies[body.rigid_body].v.norm();
+    return model.particles.v.middleRows(body.first_particle, body.particle_count).colwise().mean().norm();
+  };
+  const auto spout_lift = [&](int released) {
+    double top = -INFINITY;
+    for (int g = 0; g < released; ++g)
+      if (speed(model.bodies[g]) < 0.1) top = std::max(top, xpbd::body_centre(model, model.bodies[g]).z());
+    return std::max(0.0, top + 1.5 * longest - drops.front().z());
   };
   int released = 0;
   std::vector<xpbd::Quat> initial_orientation;
@@ -237,7 +264,7 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
 
   xpbd::SolverSettings solver_settings;
   solver_settings.time_step = 1.0 / settings.fps;
-  solver_settings.substeps = settings.substeps;
+  solver_settings.substeps = substeps_per_frame(settings);
   solver_settings.iterations = settings.iterations;
   xpbd::Solver solver(model, solver_settings);
 
@@ -249,7 +276,10 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
     const auto frame_start = std::chrono::steady_clock::now();
     const int due = std::min(settings.count,
                              per_layer * (1 + static_cast<int>(std::floor(solver.time() / settings.pour_seconds * layers))));
-    for (; released < due; ++released) release(released);
+    if (released < due) {
+      const double lift = spout_lift(released);
+      for (; released < due; ++released) release(released, lift);
+    }
     solver.step();
     const double wall = seconds_since(frame_start);
     const xpbd::ContactStatistics& contact = solver.contacts()->statistics();
@@ -302,6 +332,7 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   result.simulation_seconds = simulation_seconds;
   result.awake = static_cast<int>(
       std::count_if(model.bodies.begin(), model.bodies.end(), [](const xpbd::Body& b) { return !b.asleep; }));
+  result.penetration = xpbd::deepest_penetration(model, solver.time());
   if (plate) {
     const HeapProfile heap = heap_profile(centres, 0.5 * longest);
     result.angle_of_repose_degrees = heap.angle_degrees;
@@ -369,6 +400,8 @@ unset multiplot
                 {"angle_of_repose_deg", plate ? cell(result.angle_of_repose_degrees) : "n/a"},
                 {"heap_height_m", plate ? cell(result.heap_height) : "n/a"},
                 {"awake_at_end", cell(result.awake)},
+                {"penetration_between_grains_at_end_m", cell(result.penetration.between_bodies)},
+                {"penetration_into_container_at_end_m", cell(result.penetration.into_colliders)},
                 {"cultivar", settings.cultivar},
                 {"count", cell(settings.count)},
                 {"variants", cell(settings.variants)},
@@ -378,7 +411,7 @@ unset multiplot
                 {"spout_height_m", cell(settings.spout_height)},
                 {"grains_per_layer", cell(per_layer)},
                 {"fps", cell(settings.fps)},
-                {"substeps", cell(settings.substeps)},
+                {"substeps", cell(substeps_per_frame(settings))},
                 {"iterations", cell(settings.iterations)},
                 {"young_pa", cell(settings.young)},
                 {"rayleigh_time_s", cell(rayleigh_time)},

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "xpbd/body.hpp"
+#include "xpbd/penetration.hpp"
 
 namespace rice::experiments {
 
@@ -35,9 +36,13 @@ struct PourSettings {
   double pour_seconds = 1.5;
   double spout_height = 0.02;  ///< [m]
   double fps = 30.0;
-  /// 80 keeps the resting pile's penetrations under 5% of a grain's thickness (measured: 20
-  /// left 29%, 40 left 6.5%; README "Known limits").
-  int substeps = 80;
+  /// 0: 80 for rigid grains, which keeps the resting pile's penetrations under 5% of a grain's
+  /// thickness (measured: 20 left 29%, 40 left 6.5%), and 480 for soft ones at 30 fps, under
+  /// the Neo-Hookean pair's stability limit on the grains' sliver tets at E = 100 kPa
+  /// (measured: one soft grain in the chawan bounces for ever at 240 substeps and sleeps
+  /// within 30 frames at 480; 100 soft grains keep ringing with 3.4e-5 J at 240 and 3.5e-6 J
+  /// at 360, and at 480 all but 7 sleep by frame 90; README "Known limits").
+  int substeps = 0;
   int iterations = 1;
   double young = 1e5;  ///< soft grains [Pa]: cooked rice kernels are soft (0.1–1 MPa; ESTIMATE)
   double poisson = 0.3;
@@ -54,9 +59,13 @@ struct PourSettings {
 /// Throws std::invalid_argument naming the setting and its range.
 void validate(const PourSettings& settings);
 
+/// settings.substeps, or its default for the body kind when 0.
+int substeps_per_frame(const PourSettings& settings);
+
 struct PourResult {
   double simulation_seconds = 0.0;
   int awake = 0;  ///< grains awake at the end
+  xpbd::Penetration penetration;  ///< the deepest overlaps at the end
   /// Plate only: the heap's angle of repose [°] and its apex above the lowest centre [m].
   double angle_of_repose_degrees = 0.0, heap_height = 0.0;
 };

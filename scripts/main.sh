@@ -11,4 +11,8 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 ./build/experiments/rice figure 9 --out out/figure9
 ./build/experiments/rice figure 11 --out out/figure11
 ./build/experiments/rice grains --cultivar japonica --count 10 --out out/grains
+./build/experiments/rice pour --out out/pour
+./build/experiments/rice pour --container plate --count 400 --frames 180 --pour-seconds 3.5 --spout-height 0.05 --out out/heap
+./build/experiments/rice pour --container plate --count 400 --frames 180 --pour-seconds 3.5 --spout-height 0.05 --no-cohesion --out out/heap-dry
+./build/experiments/rice study pour-substeps --out out/pour-substeps
 echo "main: results are in out/"

@@ -2,10 +2,13 @@
 // constraints with Coulomb friction at position level.
 //
 // Every ContactSettings::broad_phase_interval, a broad phase (broad_phase.hpp) over body boxes
-// padded by the distance each body can move until the next gives candidate sphere pairs and
-// sphere–collider pairs. At the start of every substep each candidate whose gap at the substep's start is smaller than the
-// distance its two sides can move in the substep becomes a contact with a normal n fixed from
-// the start positions (a speculative contact): the half-space constraint
+// padded by the distance each body can move until the next (motion_bound) gives body pairs,
+// each with its candidate sphere pairs (or sphere–collider pairs). At the start of every
+// substep a body pair whose spheres' boxes lie further apart than the two bodies move in the
+// substep is skipped whole (may_touch); otherwise each candidate whose gap at the substep's
+// start is smaller than the distance its two sides can move in the substep becomes a contact
+// with a normal n fixed from the start positions (a speculative contact): the half-space
+// constraint
 //   C = n·(c_a − c_b) − (r_a + r_b) ≥ 0   (against a collider: C = n·(c_a − q) − r_a ≥ 0)
 // cannot be crossed however fast the bodies move, so nothing tunnels. Each Gauss–Seidel
 // sweep projects C with mass weighting (α = 0, MMCJK20 eq. 2–5) and then friction: the
@@ -116,12 +119,12 @@ class ContactSolver {
   template <class Function>
   void for_each_body(int count, const Function& function) const;
   /// Sphere centres of body b now and at the substep's start (x_previous; null when they are
-  /// the same) and radii, with its start box and largest sphere motion. A sleeping body's centres are
-  /// computed once per sleep.
+  /// the same) and radii, with its start box and largest sphere motion. A sleeping body's
+  /// centres are computed once per sleep.
   void update_centres(int b, const Positions* x_previous);
   /// False when no sphere pair of the body pair can touch in this substep: the boxes of their
   /// start spheres are further apart than the two bodies' motion and the margin (the sphere
-  /// test in begin_substep would then skip every one of them).
+  /// test in add_contacts would then skip every one of them).
   bool may_touch(const BodyPair& pair) const;
   /// The contacts of one body pair in this substep, in key order; state_of(key) gives each
   /// its state's index.

@@ -11,6 +11,7 @@
 #include "xpbd/contact_solver.hpp"
 #include "xpbd/distance_grid.hpp"
 #include "xpbd/energy.hpp"
+#include "xpbd/penetration.hpp"
 #include "xpbd/solver.hpp"
 
 namespace rice::xpbd {
@@ -293,6 +294,19 @@ TEST_P(GrainContact, ABondAboveTheWeightHoldsAHangingGrainAndOneBelowBreaks) {
   EXPECT_GE(bonds, 3);  // a patch: the grain does not swing
   EXPECT_GT(hanging_drop(GetParam(), 0.5, &bonds), 0.5);  // free fall: 1.2 m in 0.5 s
   EXPECT_EQ(bonds, 0);
+}
+
+TEST(Penetration, MeasuresAKnownOverlapAndDepthIntoACollider) {
+  // Grain b's spheres sit straight above grain a's, 1.7 mm apart: spheres of radius 1 mm
+  // overlap by 0.3 mm. The plane z = 1e-4 m cuts 0.1 mm into a's lowest spheres.
+  Model model;
+  add_grain(model, BodyKind::kRigid, Vec3::Zero());
+  add_grain(model, BodyKind::kSoft, Vec3(0.0, 0.0, kGrainThickness - 3e-4));
+  model.colliders.push_back(half_space(Vec3::UnitZ(), 1e-4, 0.5, 0.4));
+  const Penetration p = deepest_penetration(model, 0.0);
+  EXPECT_NEAR(p.between_bodies, 3e-4, 1e-12);
+  EXPECT_NEAR(p.into_colliders, 1e-4, 1e-12);
+  EXPECT_NEAR(p.deepest(), 3e-4, 1e-12);
 }
 
 TEST(GrainContact, CohesionOffFormsNoBonds) {
