@@ -235,7 +235,7 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   // A heap that grew up to the spout (sticky grains can build a column) would have new grains
   // released inside it: the spout then rises to keep a grain length and a half above the top
   // of the grains that have landed (slower than 0.1 m/s; a grain falls faster 10 ms after its
-  // release, and layers leave at least 20 ms apart).
+  // release, and layers leave further apart than that).
   const auto speed = [&](const xpbd::Body& body) {
     if (body.kind == xpbd::BodyKind::kRigid) return model.rigid_bodies[body.rigid_body].v.norm();
     return model.particles.v.middleRows(body.first_particle, body.particle_count).colwise().mean().norm();
@@ -277,8 +277,11 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
     const int due = std::min(settings.count,
                              per_layer * (1 + static_cast<int>(std::floor(solver.time() / settings.pour_seconds * layers))));
     if (released < due) {
+      // Layers due in the same frame (long frames) leave stacked a cell apart.
       const double lift = spout_lift(released);
-      for (; released < due; ++released) release(released, lift);
+      const int first_layer = released / per_layer;
+      for (; released < due; ++released)
+        release(released, lift + 1.05 * longest * (released / per_layer - first_layer));
     }
     solver.step();
     const double wall = seconds_since(frame_start);
@@ -333,6 +336,15 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   result.awake = static_cast<int>(
       std::count_if(model.bodies.begin(), model.bodies.end(), [](const xpbd::Body& b) { return !b.asleep; }));
   result.penetration = xpbd::deepest_penetration(model, solver.time());
+  // pile.png: the grains from the top (left) and the side (right).
+  const std::string top_and_side = R"(set terminal pngcairo size 1200,560
+set output 'pile.png'
+set datafile separator ','
+set multiplot layout 1,2
+set size ratio -1
+set xlabel 'x [m]'
+set ylabel 'y [m]'
+)";
   if (plate) {
     const HeapProfile heap = heap_profile(centres, 0.5 * longest);
     result.angle_of_repose_degrees = heap.angle_degrees;
@@ -343,18 +355,12 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
     write_file_atomically(folder / "heap_profile.csv", rings.text());
     const std::string title = "Angle of repose " + fixed(heap.angle_degrees, 1) + " degrees (" +
                               (settings.cohesion ? "with" : "without") + " cohesion)";
-    render_plot(folder, "pile", R"(set terminal pngcairo size 1200,560
-set output 'pile.png'
-set datafile separator ','
-set multiplot layout 1,2
-set size ratio -1
-set xlabel 'x [m]'
-set ylabel 'y [m]'
-set title 'The heap from the top (grain centres)'
+    render_plot(folder, "pile", top_and_side + R"(set title 'The heap from the top (grain centres)'
 plot 'final_centres.csv' using 2:3 with points pt 7 ps 0.5 notitle
 set size noratio
 set xlabel 'distance from the axis [m]'
 set ylabel 'height above the lowest centre [m]'
+set yrange [0:*]
 set title ')" + title + R"('
 plot 'heap_profile.csv' using 1:($3 == 1 ? $2 : 1/0) with points pt 7 title 'highest centre of a ring: flank', \
      'heap_profile.csv' using 1:($3 == 0 ? $2 : 1/0) with points pt 6 title 'apex and toe', \
@@ -362,14 +368,7 @@ plot 'heap_profile.csv' using 1:($3 == 1 ? $2 : 1/0) with points pt 7 title 'hig
 unset multiplot
 )");
   } else {
-    render_plot(folder, "pile", R"(set terminal pngcairo size 1200,560
-set output 'pile.png'
-set datafile separator ','
-set multiplot layout 1,2
-set size ratio -1
-set xlabel 'x [m]'
-set ylabel 'y [m]'
-set title 'The pile from the top (grain centres; the rim)'
+    render_plot(folder, "pile", top_and_side + R"(set title 'The pile from the top (grain centres; the rim)'
 set parametric
 plot [0:2*pi] )" + cell(bowl_shape.rim_radius) + "*cos(t), " + cell(bowl_shape.rim_radius) +
                                        R"(*sin(t) with lines lc rgb 'gray' notitle, \
