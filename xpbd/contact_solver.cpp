@@ -91,7 +91,8 @@ void ContactSolver::find_candidates(double time, double span) {
         const Vec3 d = centre_now_[sphere_offset_[a] + sa] - centre_now_[sphere_offset_[b] + sb];
         if (d.norm() - radius(a, sa) - radius(b, sb) < reach) sphere_pairs_.push_back({sa, sb});
       }
-    if (static_cast<int>(sphere_pairs_.size()) > first) found.push_back({a, b, first, static_cast<int>(sphere_pairs_.size())});
+    const int last = static_cast<int>(sphere_pairs_.size());
+    if (last > first) found.push_back({a, b, first, last});
   }
   for (size_t c = 0; c < model_.colliders.size(); ++c) {
     const Collider& collider = model_.colliders[c];
@@ -107,8 +108,9 @@ void ContactSolver::find_candidates(double time, double span) {
         if (local_signed_distance(collider, local).distance - radius(static_cast<int>(b), s) < reach)
           sphere_pairs_.push_back({s, 0});
       }
-      if (static_cast<int>(sphere_pairs_.size()) == first) continue;
-      found.push_back({static_cast<int>(b), collider_key(static_cast<int>(c)), first, static_cast<int>(sphere_pairs_.size())});
+      const int last = static_cast<int>(sphere_pairs_.size());
+      if (last == first) continue;
+      found.push_back({static_cast<int>(b), collider_key(static_cast<int>(c)), first, last});
       if (bodies[b].asleep) wake(model_.bodies[b]);  // a moving collider reaches it
     }
   }
@@ -292,7 +294,8 @@ void ContactSolver::add_contacts(const BodyPair& pair, StateOf& state_of, std::v
     const std::array<int, 4> key{pair.a, pair.b, sa, sb};
     contacts_.push_back({state_of(key), normal, Vec3::Zero()});
     if (bonds_ && gap <= model_.contact.bond_distance)
-      touches.push_back({key, start(pair.a, sa) - radius(pair.a, sa) * normal, start(pair.b, sb) + radius(pair.b, sb) * normal});
+      touches.push_back(
+          {key, start(pair.a, sa) - radius(pair.a, sa) * normal, start(pair.b, sb) + radius(pair.b, sb) * normal});
   }
 }
 

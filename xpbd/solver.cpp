@@ -60,7 +60,8 @@ Solver::Solver(Model& model, const SolverSettings& settings) : model_(model), se
   for (const Attachment& a : model.attachments)
     if (a.particle < 0 || a.particle >= p.size())
       throw std::invalid_argument("Solver: attachment names particle " + std::to_string(a.particle));
-  if (!model.bodies.empty() || !model.colliders.empty()) contacts_ = std::make_unique<ContactSolver>(model, settings_.execution == Execution::kParallel);
+  if (!model.bodies.empty() || !model.colliders.empty())
+    contacts_ = std::make_unique<ContactSolver>(model, settings_.execution == Execution::kParallel);
   coloring_distance_ = color_constraints<2>(model.distances, p.size());
   coloring_volume_ = color_constraints<4>(model.volumes, p.size());
   coloring_neo_hookean_ = color_constraints<4>(model.neo_hookean, p.size());

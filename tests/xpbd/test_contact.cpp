@@ -296,6 +296,23 @@ TEST_P(GrainContact, ABondAboveTheWeightHoldsAHangingGrainAndOneBelowBreaks) {
   EXPECT_EQ(bonds, 0);
 }
 
+TEST(SphereRadius, ASoftGrainsSpheresThinWithItsSmallestStretchOnly) {
+  // x ↦ R diag(1, 1, k) x: every tet's F has singular values (1, 1, k), so each sphere's
+  // radius is min(1, k) of its rest radius, whatever the rotation R (to 1e-8 relative: the
+  // closed-form eigenvalues of FᵀF lose digits where two are equal).
+  Model model;
+  const int grain = add_grain(model, BodyKind::kSoft, Vec3::Zero());
+  const Body& body = model.bodies[grain];
+  const Positions rest = model.particles.x;
+  const Mat3 turn = Eigen::AngleAxisd(0.5, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  for (const double k : {0.6, 1.0, 1.5}) {
+    const Mat3 map = turn * Eigen::Vector3d(1.0, 1.0, k).asDiagonal();
+    model.particles.x = rest * map.transpose();
+    for (int s = 0; s < body.sphere_count(); ++s)
+      EXPECT_NEAR(sphere_radius(model, body, s), std::min(1.0, k) * body.radii[s], 1e-8 * body.radii[s]) << "k = " << k;
+  }
+}
+
 TEST(Penetration, MeasuresAKnownOverlapAndDepthIntoACollider) {
   // Grain b's spheres sit straight above grain a's, 1.7 mm apart: spheres of radius 1 mm
   // overlap by 0.3 mm. The plane z = 1e-4 m cuts 0.1 mm into a's lowest spheres.
