@@ -18,6 +18,9 @@ Vec3 to_world(const ColliderKeyframe& pose, const Vec3& local) { return pose.tra
 Vec3 to_local(const ColliderKeyframe& pose, const Vec3& world) {
   return pose.rotation.conjugate() * (world - pose.translation);
 }
+bool same_pose(const ColliderKeyframe& a, const ColliderKeyframe& b) {
+  return a.translation == b.translation && a.rotation.coeffs() == b.rotation.coeffs();
+}
 
 }  // namespace
 
@@ -97,7 +100,7 @@ void ContactSolver::find_candidates(double time, double span) {
   for (size_t c = 0; c < model_.colliders.size(); ++c) {
     const Collider& collider = model_.colliders[c];
     const ColliderKeyframe start = collider_pose(collider, time), end = collider_pose(collider, time + span);
-    const bool moving = start.translation != end.translation || start.rotation.coeffs() != end.rotation.coeffs();
+    const bool moving = !same_pose(start, end);
     for (size_t b = 0; b < bodies.size(); ++b) {
       if (bodies[b].asleep && !moving) continue;  // a sleeping body rests on a collider at rest
       const int first = static_cast<int>(sphere_pairs_.size());
@@ -211,9 +214,7 @@ bool ContactSolver::may_touch(const BodyPair& pair) const {
   // trilinear grid, whose gradient has components of at most 1; 1 for the analytic shapes).
   const int k = collider_index(pair.b);
   const Collider& collider = model_.colliders[k];
-  if (pose_start_[k].translation != pose_end_[k].translation ||
-      pose_start_[k].rotation.coeffs() != pose_end_[k].rotation.coeffs())
-    return true;
+  if (!same_pose(pose_start_[k], pose_end_[k])) return true;
   const double lipschitz = collider.shape == ColliderShape::kDistanceGrid ? std::sqrt(3.0) : 1.0;
   const Vec3 centre = 0.5 * (box_a.lower + box_a.upper);
   const double half_diagonal = 0.5 * (box_a.upper - box_a.lower).norm();
