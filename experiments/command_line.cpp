@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "experiments/cdrf_study.hpp"
 #include "experiments/convergence_study.hpp"
 #include "experiments/grain_figures.hpp"
 #include "experiments/grain_library.hpp"
@@ -92,6 +93,9 @@ struct CommandLine::Commands {
   int threads = 0;
 
   CLI::App* stiffness_cmd = nullptr;
+  CLI::App* cdrf_cmd = nullptr;
+  CdrfStudySettings cdrf;
+  std::string cdrf_out = "out/cdrf";
   CLI::App* pour_substeps_cmd = nullptr;
   PourSubstepStudySettings pour_substeps;
   std::string pour_substeps_out = "out/pour-substeps", pour_substeps_body = "rigid";
@@ -197,6 +201,20 @@ struct CommandLine::Commands {
   void add_studies() {
     CLI::App* study = app.add_subcommand("study", "convergence, stiffness and validation studies");
     study->require_subcommand(1);
+
+    cdrf_cmd = study->add_subcommand("cdrf", "sigma0 of the CDRF fitted to a random-walk reference per water content");
+    cdrf_cmd->add_option("--out", cdrf_out, "output folder")->capture_default_str();
+    cdrf_cmd->add_option("--soak-minutes", cdrf.soak_minutes, "soak times, one water content each")
+        ->check(number_in(0, 1e4, Ends::kOpenLow))->capture_default_str();
+    cdrf_cmd->add_option("--temperature", cdrf.temperature_c, "soaking water [°C]")->check(number_in(0, 100))
+        ->capture_default_str();
+    cdrf_cmd->add_option("--radii-mm", cdrf.radii_mm, "sphere radii [mm]")->check(number_in(0, 100, Ends::kOpenLow))
+        ->capture_default_str();
+    cdrf_cmd->add_option("--photons", cdrf.photons, "photons per sphere")->check(number_in(1000, 1e9))
+        ->capture_default_str();
+    cdrf_cmd->add_option("--bins", cdrf.bins, "theta bins over [0, pi]")->check(number_in(4, 1000))
+        ->capture_default_str();
+    cdrf_cmd->add_option("--seed", cdrf.seed, "random seed")->check(seed_value())->capture_default_str();
 
     pour_substeps_cmd = study->add_subcommand("pour-substeps", "the pour's overlaps against wall time over substeps");
     pour_substeps_cmd->add_option("--out", pour_substeps_out, "output folder")->capture_default_str();
@@ -366,6 +384,7 @@ int CommandLine::threads() const { return commands_->threads; }
 void CommandLine::validate() const {
   const Commands& c = *commands_;
   if (*c.stiffness_cmd) experiments::validate(c.stiffness);
+  if (*c.cdrf_cmd) experiments::validate(c.cdrf);
   if (*c.oscillator_cmd) experiments::validate(c.oscillator);
   if (*c.convergence_cmd) experiments::validate(c.convergence_settings());
   if (*c.grains_cmd) experiments::validate(c.grain_library_settings());
@@ -377,6 +396,7 @@ void CommandLine::validate() const {
 void CommandLine::run() const {
   const Commands& c = *commands_;
   if (*c.stiffness_cmd) stiffness_study_command(c.stiffness, c.stiffness_out);
+  if (*c.cdrf_cmd) cdrf_study_command(c.cdrf, c.cdrf_out);
   if (*c.pour_substeps_cmd) pour_substep_study_command(c.pour_substeps_settings(), c.pour_substeps_out);
   if (*c.oscillator_cmd) oscillator_study_command(c.oscillator, c.oscillator_out);
   if (*c.convergence_cmd) convergence_study_command(c.convergence_settings(), c.convergence_out);

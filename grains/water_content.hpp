@@ -22,7 +22,21 @@
 // Wetter grains carry more gelatinised surface starch, the glue (an ESTIMATE of the law's
 // form; S is calibrated, the proportionality is not).
 //
-// σ0 (eq. 8): a PLACEHOLDER linear map from W to σ0 until the shading work fits it.
+// Optics of a soaked grain, the medium of the shading module's subsurface reference:
+//  - refractive index: the volume-weighted mean (Arago–Biot rule, an approximation) of water,
+//    1.333, and starch granules, 1.53, with densities 1000 and 1500 kg/m³;
+//  - reduced scattering μs' = 12 /mm · exp(−W / 25 %): an ESTIMATE. No measurement for rice is
+//    in reach; the order is that of plant tissue (pear flesh: ~1 /mm at 500–1000 nm, Hu, Fu &
+//    Ying 2017), higher for the chalky low-water grain. Water swells and gelatinises the
+//    starch, narrowing the index steps that scatter, so μs' falls with W (the grain turns
+//    translucent);
+//  - absorption μa = 0.01 /mm: an ESTIMATE, the low end of plant tissue (pear: 0.01–0.06 /mm);
+//    starch and water barely absorb visible light;
+//  - isotropic scattering with μs = μs' (the similarity relation), as only μs' matters once
+//    light has scattered a few times.
+//
+// σ0 (eq. 8): ln σ0 = s0 + s1 W, fitted by `rice study cdrf` (experiments/cdrf_study.hpp) to
+// the random-walk reference with the optics above; the constants are that study's output.
 #pragma once
 
 #include <vector>
@@ -60,6 +74,13 @@ struct DampingReference {
   double beta = 2e-3;  ///< [s] PLACEHOLDER
 };
 
+/// Optical parameters of a soaked grain, SI units.
+struct GrainOptics {
+  double reduced_scattering = 0.0;  ///< μs' [1/m]
+  double absorption = 0.0;          ///< μa [1/m]
+  double refractive_index = 0.0;
+};
+
 class WaterContentModel {
  public:
   /// Fits every temperature of `samples` (at least two temperatures, three points each,
@@ -78,9 +99,10 @@ class WaterContentModel {
   double beta(double soak_minutes, double temperature_c) const;
   /// Pull-off force of two touching grains in grain weights, S W(t, T) / W_ref.
   double cohesion_ratio(double stickiness, double soak_minutes, double temperature_c) const;
-  /// σ0 of eq. 8 [rad·m], PLACEHOLDER: (0.2 + 0.4 W/30) rad·mm, so σ = σ0 κ is 0.13–0.4 rad
-  /// on a grain of radius 1.5 mm (wetter grains scatter more).
+  /// σ0 of eq. 8 [m] (σ = σ0 κ in radians): exp(s0 + s1 W), fitted by `rice study cdrf`.
   static double scattering_sigma0(double absorption_percent);
+  /// Optical parameters at water absorption W [%] (ESTIMATES; see the top of this file).
+  static GrainOptics optics(double absorption_percent);
 
  private:
   std::vector<PelegFit> peleg_;
