@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs every fuzz target (tests/fuzz) for SECONDS seconds each (default 60), as many at once
+# Runs every fuzz target (tests/fuzz) for SECONDS seconds each (default 30), as many at once
 # as there are cores, on the sanitizer build (scripts/sanitize.sh builds it; this script
 # builds the fuzz targets if needed). Each target starts from its seed corpus in
 # tests/fuzz/corpus/<target>/ and keeps what it learns in build-sanitize/fuzz/corpus/<target>/
@@ -10,7 +10,7 @@
 #   ./scripts/fuzz.sh [SECONDS] [TARGET...]
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-seconds=${1:-60}
+seconds=${1:-30}
 shift || true
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(obj off ply medit absorption)

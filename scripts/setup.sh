@@ -9,7 +9,7 @@ packages=(
   cmake ninja-build g++ ccache pkg-config
   clang libclang-rt-14-dev
   libeigen3-dev libtbb-dev libcli11-dev libsuitesparse-dev libopenblas0-serial
-  libopenvdb-dev libboost-iostreams-dev libcgal-dev libgsl-dev libpng-dev
+  libopenvdb-dev libboost-iostreams-dev libcgal-dev libgsl-dev libpng-dev libembree-dev libopenexr-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox
 )

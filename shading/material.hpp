@@ -1,0 +1,108 @@
+// Surface materials of the renderer, as the product f(ω_o, ω_i)·cos-like term that multiplies
+// incident radiance (so each is one function of the two directions):
+//  - kRice: the CDRF diffuse term (paper eqs. 6–8), albedo/π · f_r(θ_i, σ0 |κ|), which
+//    replaces the cosine of a Lambertian surface and lets light in past the terminator on
+//    curved parts, plus the wet surface's dielectric specular lobe;
+//  - kDiffuse: Lambertian, albedo/π · max(cos θ_i, 0);
+//  - kGlazed: Lambertian under a dielectric coat: the diffuse part weighted by the coat's
+//    Fresnel transmittance, plus the coat's specular lobe (a glazed bowl).
+// The specular lobe is a GGX microfacet BRDF (Walter et al. 2007) with unpolarised Fresnel
+// reflectance and the height-correlated Smith shadowing.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "shading/cdrf.hpp"
+#include "shading/fresnel.hpp"
+#include "shading/lights.hpp"
+
+namespace rice::shading {
+
+enum class MaterialKind { kRice, kDiffuse, kGlazed };
+
+struct Material {
+  MaterialKind kind = MaterialKind::kDiffuse;
+  Color albedo = Color::Constant(0.8f);
+  double sigma0 = 0.0;          ///< [m], kRice: CDRF width σ = σ0 |κ|
+  double refractive_index = 1.45;  ///< of the specular coat (kRice, kGlazed)
+  double roughness = 0.15;      ///< GGX α of the specular lobe
+};
+
+/// GGX normal distribution D(h) for cos θ_h = n·h.
+inline double ggx_distribution(double cos_h, double alpha) {
+  const double a2 = alpha * alpha, c2 = cos_h * cos_h;
+  const double d = c2 * (a2 - 1.0) + 1.0;
+  return a2 / (std::numbers::pi * d * d);
+}
+
+/// Height-correlated Smith masking–shadowing G2 for GGX (Heitz 2014, eq. 99).
+inline double ggx_smith(double cos_o, double cos_i, double alpha) {
+  const double a2 = alpha * alpha;
+  auto lambda = [&](double c) { return 0.5 * (-1.0 + std::sqrt(1.0 + a2 * (1.0 - c * c) / (c * c))); };
+  return 1.0 / (1.0 + lambda(cos_o) + lambda(cos_i));
+}
+
+/// Specular lobe f_s · cos θ_i for unit n, ω_o, ω_i (zero below the surface on either side).
+inline double specular_term(const Eigen::Vector3f& n, const Eigen::Vector3f& wo, const Eigen::Vector3f& wi,
+                            double eta, double alpha) {
+  const double cos_o = n.dot(wo), cos_i = n.dot(wi);
+  if (cos_o <= 0.0 || cos_i <= 0.0) return 0.0;
+  const Eigen::Vector3f h = (wo + wi).normalized();
+  const double f = fresnel_reflectance(wo.dot(h), eta);
+  return ggx_distribution(n.dot(h), alpha) * ggx_smith(cos_o, cos_i, alpha) * f / (4.0 * cos_o);
+}
+
+/// Diffuse part f_d · cos-like for light from ω_i at a point of curvature κ [1/m].
+inline Color diffuse_term(const Material& m, const CdrfTable& cdrf, const Eigen::Vector3f& n, const Eigen::Vector3f& wo,
+                          const Eigen::Vector3f& wi, double curvature) {
+  const double cos_i = n.dot(wi);
+  switch (m.kind) {
+    case MaterialKind::kRice:
+      return m.albedo * static_cast<float>(cdrf(cos_i, m.sigma0 * std::abs(curvature)) / std::numbers::pi);
+    case MaterialKind::kDiffuse:
+      return m.albedo * static_cast<float>(std::max(cos_i, 0.0) / std::numbers::pi);
+    case MaterialKind::kGlazed: {
+      if (cos_i <= 0.0 || n.dot(wo) <= 0.0) return Color::Zero();
+      const double through = (1.0 - fresnel_reflectance(cos_i, m.refractive_index)) *
+                             (1.0 - fresnel_reflectance(n.dot(wo), m.refractive_index));
+      return m.albedo * static_cast<float>(through * cos_i / std::numbers::pi);
+    }
+  }
+  return Color::Zero();
+}
+
+inline bool has_specular(const Material& m) { return m.kind != MaterialKind::kDiffuse; }
+
+/// f · cos-like, diffuse and specular together.
+inline Color surface_response(const Material& m, const CdrfTable& cdrf, const Eigen::Vector3f& n,
+                              const Eigen::Vector3f& wo, const Eigen::Vector3f& wi, double curvature) {
+  Color c = diffuse_term(m, cdrf, n, wo, wi, curvature);
+  if (has_specular(m)) c += static_cast<float>(specular_term(n, wo, wi, m.refractive_index, m.roughness));
+  return c;
+}
+
+/// A direction from the specular lobe: GGX half vector (pdf D(h) cos θ_h) reflected about;
+/// returns the weight f_s cos θ_i / pdf(ω_i), zero where the reflection goes below.
+inline double sample_specular(const Eigen::Vector3f& n, const Eigen::Vector3f& wo, double eta, double alpha, double a,
+                              double b, Eigen::Vector3f& wi) {
+  const double phi = 2.0 * std::numbers::pi * b;
+  const double cos_h = std::sqrt((1.0 - a) / (1.0 + (alpha * alpha - 1.0) * a));
+  const double sin_h = std::sqrt(std::max(0.0, 1.0 - cos_h * cos_h));
+  const Eigen::Vector3f t = (std::abs(n.x()) < 0.9f ? Eigen::Vector3f::UnitX() : Eigen::Vector3f::UnitY()).cross(n).normalized();
+  const Eigen::Vector3f s = n.cross(t);
+  const Eigen::Vector3f h =
+      (static_cast<float>(cos_h) * n + static_cast<float>(sin_h) * (static_cast<float>(std::cos(phi)) * t + static_cast<float>(std::sin(phi)) * s)).normalized();
+  const double o_dot_h = wo.dot(h);
+  if (o_dot_h <= 0.0) return 0.0;
+  wi = (2.0f * static_cast<float>(o_dot_h) * h - wo).normalized();
+  const double cos_i = n.dot(wi), cos_o = n.dot(wo);
+  if (cos_i <= 0.0 || cos_o <= 0.0) return 0.0;
+  // f cos_i / pdf with pdf = D cos_h / (4 o·h): F G2 (o·h) / (cos_o cos_h).
+  return fresnel_reflectance(o_dot_h, eta) * ggx_smith(cos_o, cos_i, alpha) * o_dot_h / (cos_o * cos_h);
+}
+
+}  // namespace rice::shading

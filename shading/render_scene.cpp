@@ -1,0 +1,221 @@
+// Embree-backed render geometry (render_scene.hpp).
+#include "shading/render_scene.hpp"
+
+#include <embree3/rtcore.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace rice::shading {
+
+struct RenderScene::Embree {
+  RTCDevice device = nullptr;
+  RTCScene top = nullptr;
+  ~Embree() {
+    if (top) rtcReleaseScene(top);
+    if (device) rtcReleaseDevice(device);
+  }
+};
+
+struct RenderScene::Prototype {
+  RTCScene scene = nullptr;
+  std::vector<Eigen::Vector3f> positions, normals;
+  std::vector<float> curvature;  // empty: flat
+  std::vector<Eigen::Vector3i> triangles;
+  ~Prototype() {
+    if (scene) rtcReleaseScene(scene);
+  }
+};
+
+namespace {
+
+// Embree reports errors per device; an exception cannot cross its C interface, so they are
+// checked after each building call.
+void check(RTCDevice device, const char* what) {
+  const RTCError code = rtcGetDeviceError(device);
+  if (code != RTC_ERROR_NONE)
+    throw std::runtime_error(std::string("RenderScene: Embree error ") + std::to_string(static_cast<int>(code)) +
+                             " in " + what);
+}
+
+}  // namespace
+
+RenderScene::RenderScene() : embree_(std::make_unique<Embree>()) {
+  embree_->device = rtcNewDevice(nullptr);
+  if (!embree_->device) throw std::runtime_error("RenderScene: Embree could not create a device");
+  embree_->top = rtcNewScene(embree_->device);
+  rtcSetSceneFlags(embree_->top, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
+  check(embree_->device, "creating the scene");
+}
+
+RenderScene::~RenderScene() = default;
+
+int RenderScene::add_prototype(const MeshVertices& V, const MeshTriangles& F, const Eigen::VectorXd& curvature) {
+  if (committed_) throw std::logic_error("RenderScene: add_prototype after commit");
+  if (V.rows() == 0 || F.rows() == 0) throw std::invalid_argument("RenderScene: a prototype needs vertices and triangles");
+  if (F.minCoeff() < 0 || F.maxCoeff() >= V.rows())
+    throw std::invalid_argument("RenderScene: a triangle names a vertex outside 0.." + std::to_string(V.rows() - 1));
+  if (curvature.size() != 0 && curvature.size() != V.rows())
+    throw std::invalid_argument("RenderScene: " + std::to_string(curvature.size()) + " curvatures for " +
+                                std::to_string(V.rows()) + " vertices");
+  auto prototype = std::make_unique<Prototype>();
+  const MeshVertices N = vertex_normals(V, F);
+  for (Eigen::Index v = 0; v < V.rows(); ++v) {
+    prototype->positions.push_back(V.row(v).transpose().cast<float>());
+    prototype->normals.push_back(N.row(v).transpose().cast<float>());
+    if (curvature.size() != 0) prototype->curvature.push_back(static_cast<float>(curvature(v)));
+  }
+  for (Eigen::Index f = 0; f < F.rows(); ++f) prototype->triangles.push_back(F.row(f).transpose());
+
+  RTCGeometry mesh = rtcNewGeometry(embree_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                                3 * sizeof(float), static_cast<size_t>(V.rows())));
+  for (Eigen::Index v = 0; v < V.rows(); ++v)
+    for (int k = 0; k < 3; ++k) vertices[3 * v + k] = static_cast<float>(V(v, k));
+  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                 3 * sizeof(unsigned), static_cast<size_t>(F.rows())));
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) indices[3 * f + k] = static_cast<unsigned>(F(f, k));
+  rtcCommitGeometry(mesh);
+  prototype->scene = rtcNewScene(embree_->device);
+  rtcSetSceneFlags(prototype->scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);  // occluded(…, ignore)
+  rtcAttachGeometry(prototype->scene, mesh);
+  rtcReleaseGeometry(mesh);
+  rtcCommitScene(prototype->scene);
+  check(embree_->device, "add_prototype");
+  prototypes_.push_back(std::move(prototype));
+  return static_cast<int>(prototypes_.size()) - 1;
+}
+
+int RenderScene::add_instance(int prototype, const Eigen::Affine3d& transform, int material) {
+  if (committed_) throw std::logic_error("RenderScene: add_instance after commit");
+  if (prototype < 0 || prototype >= prototype_count())
+    throw std::invalid_argument("RenderScene: no prototype " + std::to_string(prototype));
+  const Eigen::Matrix3d L = transform.linear();
+  const double det = L.determinant();
+  const double scale = std::cbrt(det);
+  if (!(det > 0.0) || !(L.transpose() * L).isApprox(scale * scale * Eigen::Matrix3d::Identity(), 1e-6)) {
+    throw std::invalid_argument("RenderScene: instance transforms must be a rotation, a uniform scale and a translation");
+  }
+  Instance instance;
+  instance.prototype = prototype;
+  instance.material = material;
+  instance.linear = L.cast<float>();
+  instance.normal_matrix = (L.inverse().transpose()).cast<float>();
+  instance.translation = transform.translation().cast<float>();
+  instance.curvature_scale = static_cast<float>(1.0 / scale);
+
+  RTCGeometry geometry = rtcNewGeometry(embree_->device, RTC_GEOMETRY_TYPE_INSTANCE);
+  rtcSetGeometryInstancedScene(geometry, prototypes_[prototype]->scene);
+  float xfm[12];  // 3×4, column major: the three columns of L, then the translation
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) xfm[3 * c + r] = static_cast<float>(L(r, c));
+  for (int r = 0; r < 3; ++r) xfm[9 + r] = static_cast<float>(transform.translation()(r));
+  rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+  rtcCommitGeometry(geometry);
+  const unsigned id = static_cast<unsigned>(instances_.size());
+  rtcAttachGeometryByID(embree_->top, geometry, id);  // geometry id = instance index
+  rtcReleaseGeometry(geometry);
+  check(embree_->device, "add_instance");
+  instances_.push_back(instance);
+  return static_cast<int>(id);
+}
+
+void RenderScene::commit() {
+  rtcCommitScene(embree_->top);
+  check(embree_->device, "commit");
+  RTCBounds b;
+  rtcGetSceneBounds(embree_->top, &b);
+  bounds_ = Eigen::AlignedBox3f(Eigen::Vector3f(b.lower_x, b.lower_y, b.lower_z),
+                                Eigen::Vector3f(b.upper_x, b.upper_y, b.upper_z));
+  offset_ = instances_.empty() ? 1e-7f : std::max(1e-9f, 1e-6f * bounds_.diagonal().norm());
+  committed_ = true;
+}
+
+Eigen::AlignedBox3f RenderScene::bounds() const { return bounds_; }
+
+namespace {
+
+RTCRay embree_ray(const Ray& ray) {
+  RTCRay r;
+  r.org_x = ray.origin.x();
+  r.org_y = ray.origin.y();
+  r.org_z = ray.origin.z();
+  r.dir_x = ray.direction.x();
+  r.dir_y = ray.direction.y();
+  r.dir_z = ray.direction.z();
+  r.tnear = ray.t_min;
+  r.tfar = ray.t_max;
+  r.time = 0.0f;
+  r.mask = ~0u;
+  r.id = 0;
+  r.flags = 0;
+  return r;
+}
+
+}  // namespace
+
+std::optional<ShadingPoint> RenderScene::intersect(const Ray& ray) const {
+  if (!committed_) throw std::logic_error("RenderScene: intersect before commit");
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit hit;
+  hit.ray = embree_ray(ray);
+  hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  hit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(embree_->top, &context, &hit);
+  if (hit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+
+  const Instance& instance = instances_[hit.hit.instID[0]];
+  const Prototype& prototype = *prototypes_[instance.prototype];
+  const Eigen::Vector3i& tri = prototype.triangles[hit.hit.primID];
+  const float u = hit.hit.u, v = hit.hit.v, w = 1.0f - u - v;
+  ShadingPoint p;
+  p.t = hit.ray.tfar;
+  p.position = ray.origin + p.t * ray.direction;
+  const Eigen::Vector3f& a = prototype.positions[tri[0]];
+  const Eigen::Vector3f& b = prototype.positions[tri[1]];
+  const Eigen::Vector3f& c = prototype.positions[tri[2]];
+  p.geometric_normal = (instance.normal_matrix * (b - a).cross(c - a)).normalized();
+  const Eigen::Vector3f n = w * prototype.normals[tri[0]] + u * prototype.normals[tri[1]] + v * prototype.normals[tri[2]];
+  p.shading_normal = (instance.normal_matrix * n).normalized();
+  if (!prototype.curvature.empty()) {
+    p.curvature = instance.curvature_scale * (w * prototype.curvature[tri[0]] + u * prototype.curvature[tri[1]] +
+                                              v * prototype.curvature[tri[2]]);
+  }
+  p.material = instance.material;
+  p.instance = static_cast<int>(hit.hit.instID[0]);
+  return p;
+}
+
+namespace {
+
+// Embree's context filter: a context that carries the instance to see through.
+struct IgnoringContext {
+  RTCIntersectContext context;  // first member: Embree passes its address back
+  unsigned ignore;
+};
+
+void ignore_instance(const RTCFilterFunctionNArguments* args) {
+  const auto* self = reinterpret_cast<const IgnoringContext*>(args->context);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] != -1) continue;
+    if (RTCHitN_instID(args->hit, args->N, i, 0) == self->ignore) args->valid[i] = 0;
+  }
+}
+
+}  // namespace
+
+bool RenderScene::occluded(const Ray& ray, int ignore) const {
+  if (!committed_) throw std::logic_error("RenderScene: occluded before commit");
+  IgnoringContext context;
+  rtcInitIntersectContext(&context.context);
+  context.ignore = static_cast<unsigned>(ignore);
+  if (ignore >= 0) context.context.filter = ignore_instance;
+  RTCRay r = embree_ray(ray);
+  rtcOccluded1(embree_->top, &context.context, &r);
+  return r.tfar < 0.0f;  // Embree sets tfar to −∞ on a hit
+}
+
+}  // namespace rice::shading

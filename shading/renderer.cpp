@@ -1,0 +1,138 @@
+// Direct-lighting renderer over Embree (renderer.hpp).
+#include "shading/renderer.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+namespace rice::shading {
+
+double rms_difference(const Image& a, const Image& b) {
+  if (a.width != b.width || a.height != b.height) throw std::invalid_argument("rms_difference: images of different sizes");
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i) sum += (a.pixels[i] - b.pixels[i]).cast<double>().square().sum();
+  return a.pixels.empty() ? 0.0 : std::sqrt(sum / (3.0 * a.pixels.size()));
+}
+
+namespace {
+
+constexpr int kTile = 16;
+
+struct Counters {
+  long long camera = 0, shadow = 0;
+};
+
+// Radiance towards −ray.direction from the first surface along the camera ray. Sample pairs:
+// 0 pixel, 1 lens, then one per sun, one per quad light, one for the environment, one for
+// the specular lobe.
+Color shade(const RenderScene& scene, const std::vector<Material>& materials, const Lights& lights, const CdrfTable& cdrf,
+            const RenderSettings& settings, const PixelSampler& sampler, int index, const Ray& ray, Counters& counters) {
+  const std::optional<ShadingPoint> hit = scene.intersect(ray);
+  ++counters.camera;
+  if (!hit) return lights.environment.radiance(ray.direction);
+  const Material& material = materials[hit->material];
+  const Eigen::Vector3f wo = -ray.direction;
+  Eigen::Vector3f ng = hit->geometric_normal, n = hit->shading_normal;
+  if (ng.dot(wo) < 0.0f) {  // seen from behind (an open mesh, or a ray inside): face the viewer
+    ng = -ng;
+    n = -n;
+  }
+  const int self = material.kind == MaterialKind::kRice ? hit->instance : -1;
+  const float offset = scene.ray_offset();
+  auto visible = [&](const Eigen::Vector3f& wi, float distance, bool test) {
+    if (!test) return true;
+    ++counters.shadow;
+    const Eigen::Vector3f origin = hit->position + (ng.dot(wi) >= 0.0f ? offset : -offset) * ng;
+    return !scene.occluded({origin, wi, 0.0f, distance * (1.0f - 1e-4f)}, self);
+  };
+
+  Color radiance = Color::Zero();
+  int pair = 2;
+  double a = 0.0, b = 0.0;
+  for (const Sun& sun : lights.suns) {
+    sampler.pair(index, pair++, a, b);
+    const LightSample s = sun.sample(a, b);
+    const Color f = surface_response(material, cdrf, n, wo, s.direction, hit->curvature);
+    if ((f > 0.0f).any() && visible(s.direction, s.distance, settings.shadows)) radiance += f * s.weight;
+  }
+  for (const QuadLight& quad : lights.quads) {
+    sampler.pair(index, pair++, a, b);
+    const LightSample s = quad.sample(hit->position, a, b);
+    if ((s.weight <= 0.0f).all()) continue;
+    const Color f = surface_response(material, cdrf, n, wo, s.direction, hit->curvature);
+    if ((f > 0.0f).any() && visible(s.direction, s.distance, settings.shadows)) radiance += f * s.weight;
+  }
+  if (!lights.environment.empty()) {
+    // Diffuse part over the whole sphere; the specular part from its own lobe below.
+    sampler.pair(index, pair++, a, b);
+    const LightSample s = lights.environment.sample(a, b);
+    const Color f = diffuse_term(material, cdrf, n, wo, s.direction, hit->curvature);
+    if ((f > 0.0f).any() && visible(s.direction, s.distance, settings.ambient_occlusion)) radiance += f * s.weight;
+    if (has_specular(material)) {
+      sampler.pair(index, pair++, a, b);
+      Eigen::Vector3f wi;
+      const double weight = sample_specular(n, wo, material.refractive_index, material.roughness, a, b, wi);
+      if (weight > 0.0 && visible(wi, std::numeric_limits<float>::infinity(), settings.ambient_occlusion))
+        radiance += static_cast<float>(weight) * lights.environment.radiance(wi);
+    }
+  }
+  return radiance;
+}
+
+}  // namespace
+
+Image render(const RenderScene& scene, const std::vector<Material>& materials, const Lights& lights,
+             const Camera& camera, const CdrfTable& cdrf, const RenderSettings& settings, RenderStats* stats,
+             const std::function<void(int, int)>& progress) {
+  if (settings.width < 1 || settings.height < 1 || settings.samples_per_pixel < 1)
+    throw std::invalid_argument("render: width, height and samples per pixel must be at least 1");
+  if (materials.empty()) throw std::invalid_argument("render: no materials");
+  // Material indices are checked here, once, rather than per hit.
+  for (int i = 0; i < scene.instance_count(); ++i) {
+    const int m = scene.material_of(i);
+    if (m < 0 || m >= static_cast<int>(materials.size()))
+      throw std::invalid_argument("render: instance " + std::to_string(i) + " has material " + std::to_string(m) +
+                                  " of " + std::to_string(materials.size()));
+  }
+  const auto start = std::chrono::steady_clock::now();
+  Image image(settings.width, settings.height);
+  const int tiles_x = (settings.width + kTile - 1) / kTile, tiles_y = (settings.height + kTile - 1) / kTile;
+  const int tiles = tiles_x * tiles_y;
+  std::atomic<int> done = 0;
+  std::atomic<long long> camera_rays = 0, shadow_rays = 0;
+  const double aspect = static_cast<double>(settings.width) / settings.height;
+  tbb::parallel_for(0, tiles, [&](int tile) {
+    Counters counters;
+    const int x0 = (tile % tiles_x) * kTile, y0 = (tile / tiles_x) * kTile;
+    for (int y = y0; y < std::min(y0 + kTile, settings.height); ++y) {
+      for (int x = x0; x < std::min(x0 + kTile, settings.width); ++x) {
+        const PixelSampler sampler(settings.sampler, settings.seed, x, y, settings.samples_per_pixel);
+        Color sum = Color::Zero();
+        for (int i = 0; i < settings.samples_per_pixel; ++i) {
+          double px = 0.0, py = 0.0, la = 0.0, lb = 0.0;
+          sampler.pair(i, 0, px, py);
+          sampler.pair(i, 1, la, lb);
+          const CameraRay cr = camera.ray((x + px) / settings.width, (y + py) / settings.height, la, lb, aspect);
+          sum += shade(scene, materials, lights, cdrf, settings, sampler, i, {cr.origin, cr.direction}, counters);
+        }
+        image.at(x, y) = sum / static_cast<float>(settings.samples_per_pixel);
+      }
+    }
+    camera_rays += counters.camera;
+    shadow_rays += counters.shadow;
+    const int finished = ++done;
+    if (progress) progress(finished, tiles);
+  });
+  if (stats) {
+    stats->camera_rays = camera_rays;
+    stats->shadow_rays = shadow_rays;
+    stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  return image;
+}
+
+}  // namespace rice::shading
