@@ -112,6 +112,11 @@ void cdrf_study_command(const CdrfStudySettings& settings, const std::filesystem
   double s0 = 0, s1 = 0, c00 = 0, c01 = 0, c11 = 0, sum_sq = 0;
   gsl_fit_linear(w.data(), 1, log_sigma0.data(), 1, w.size(), &s0, &s1, &c00, &c01, &c11, &sum_sq);
   const double law_rms = std::sqrt(sum_sq / w.size());
+  // The albedo A, linear in W.
+  std::vector<double> amplitude;
+  for (const auto& r : results) amplitude.push_back(r.fit.amplitude);
+  double a0 = 0, a1 = 0, albedo_sum_sq = 0;
+  gsl_fit_linear(w.data(), 1, amplitude.data(), 1, w.size(), &a0, &a1, &c00, &c01, &c11, &albedo_sum_sq);
 
   CsvTable fits({"soak_minutes", "absorption_percent", "reduced_scattering_per_mm", "refractive_index", "sigma0_mm",
                  "law_sigma0_mm", "amplitude", "rms", "relative_rms", "max_abs_error", "reference_s", "cdrf_ns"});
@@ -166,10 +171,14 @@ plot 'cdrf_fit.csv' using 2:5 with points pt 7 ps 1.5 title 'fitted to the rando
                                   {"law_s0", cell(s0)},
                                   {"law_s1_per_percent", cell(s1)},
                                   {"law_rms_log", cell(law_rms)},
+                                  {"albedo_a0", cell(a0)},
+                                  {"albedo_a1_per_percent", cell(a1)},
+                                  {"albedo_rms", cell(std::sqrt(albedo_sum_sq / w.size()))},
                                   {"worst_relative_rms", cell(worst_relative)},
                                   {"wall_s", cell(seconds_since(start))}}));
-  std::printf("study cdrf: ln sigma0[m] = %.4f + %.5f W (RMS %.3f in ln), worst relative RMS of the fit %.1f%%\n",
-              s0, s1, law_rms, 100 * worst_relative);
+  std::printf("study cdrf: ln sigma0[m] = %.4f + %.5f W (RMS %.3f in ln), albedo = %.4f %+.5f W; worst relative "
+              "RMS of the fit %.1f%%\n",
+              s0, s1, law_rms, a0, a1, 100 * worst_relative);
 }
 
 }  // namespace rice::experiments

@@ -4,9 +4,9 @@
 // For each soak time (at one temperature) the water-content model gives the absorption W and
 // the grain's optics (grains/water_content.hpp); a random walk (shading/random_walk.hpp)
 // lights spheres of several radii and tallies their exitance against θ; σ0 and the albedo A
-// are fitted to all radii at once (shading/sigma0_fit.hpp). Then ln σ0 = s0 + s1 W is fitted
-// across the water contents (GSL linear least squares): the law WaterContentModel::
-// scattering_sigma0 holds.
+// are fitted to all radii at once (shading/sigma0_fit.hpp). Then ln σ0 = s0 + s1 W and
+// A = a0 + a1 W are fitted across the water contents (GSL linear least squares): the laws
+// WaterContentModel::scattering_sigma0 and cdrf_albedo hold.
 //
 // Writes cdrf_fit.csv (a row per water content), cdrf_profiles.csv (a row per θ bin and
 // radius: reference ± standard error, fitted CDRF), cdrf_profiles.png, sigma0_law.png and

@@ -16,12 +16,14 @@
 
 #include "experiments/cdrf_study.hpp"
 #include "experiments/convergence_study.hpp"
+#include "experiments/figure13.hpp"
 #include "experiments/grain_figures.hpp"
 #include "experiments/grain_library.hpp"
 #include "experiments/interrupt.hpp"
 #include "experiments/oscillator_study.hpp"
 #include "experiments/pour_scene.hpp"
 #include "experiments/pour_substep_study.hpp"
+#include "experiments/render_command.hpp"
 #include "experiments/water_absorption_figure.hpp"
 #include "experiments/xpbd_stiffness_study.hpp"
 #include "grains/cultivar.hpp"
@@ -120,11 +122,22 @@ struct CommandLine::Commands {
   // Edits of the chosen cultivar, applied after it is looked up by name.
   std::vector<std::pair<CLI::Option*, std::function<double&(grains::Cultivar&)>>> cultivar_edits;
 
-  CLI::App *figure8_cmd = nullptr, *figure9_cmd = nullptr, *figure11_cmd = nullptr;
+  CLI::App *figure8_cmd = nullptr, *figure9_cmd = nullptr, *figure11_cmd = nullptr, *figure13_cmd = nullptr;
+  Figure13Settings figure13;
+  std::string figure13_out = "out/figure13";
   WaterAbsorptionFigureSettings absorption;
   std::string absorption_out = "out/figure11", figure8_out = "out/figure8", figure9_out = "out/figure9";
   std::uint64_t figure_seed = 1;
   int figure9_count = 20;
+
+  CLI::App* render_cmd = nullptr;
+  RenderCommandSettings render;
+  std::string render_out = "out/render", render_sampler = "sobol";
+  std::vector<std::string> render_meshes;
+  std::vector<double> render_eye, render_look_at;
+  double render_fov = 30.0, render_aperture = 0.0, render_focus = 0.0;
+  bool render_no_shadows = false, render_no_ao = false, render_no_ground = false, render_side_by_side = false;
+  std::string render_sky_image;
 
   CLI::App* pour_cmd = nullptr;
   PourSettings pour;
@@ -136,6 +149,7 @@ struct CommandLine::Commands {
     app.add_option("--threads", threads, "worker threads (0: all cores)")->check(number_in(0, 1024));
     add_studies();
     add_grains();
+    add_render();
     add_figures();
     add_pour();
   }
@@ -334,6 +348,71 @@ struct CommandLine::Commands {
     grains_cmd->add_flag("--no-sections", no_sections, "skip the cross-section PNGs");
   }
 
+  void add_render() {
+    render_cmd = app.add_subcommand("render", "grain meshes rendered as cooked rice with the CDRF (PNG and EXR)");
+    render_cmd->add_option("--meshes", render_meshes, "mesh files (PLY, OBJ), or folders of them")->required();
+    render_cmd->add_option("--out", render_out, "output folder")->capture_default_str();
+    render_cmd->add_option("--absorption", render.absorption_percent, "water absorption W [%]: sigma0 and albedo")
+        ->check(number_in(0, 100))->capture_default_str();
+    render_cmd->add_option("--width", render.render.width, "pixels")->check(number_in(1, 16384))->capture_default_str();
+    render_cmd->add_option("--height", render.render.height, "pixels")->check(number_in(1, 16384))->capture_default_str();
+    render_cmd->add_option("--spp", render.render.samples_per_pixel, "samples per pixel")
+        ->check(number_in(1, 1 << 20))->capture_default_str();
+    render_cmd->add_option("--sampler", render_sampler, "sobol, stratified or independent")
+        ->check(CLI::IsMember({"sobol", "stratified", "independent"}))->capture_default_str();
+    render_cmd->add_option("--seed", render.render.seed, "random seed")->check(seed_value())->capture_default_str();
+    render_cmd->add_flag("--no-shadows", render_no_shadows, "lights are not blocked");
+    render_cmd->add_flag("--no-ao", render_no_ao, "the sky is not blocked (no ambient occlusion)");
+    render_cmd->add_flag("--no-ground", render_no_ground, "no grey plane under the meshes");
+    render_cmd->add_flag("--side-by-side", render_side_by_side, "lay the meshes out in a row along x");
+    render_cmd->add_option("--eye", render_eye, "camera position x y z [m] (default: framed)")->expected(3)
+        ->check(number_in(-1e6, 1e6));
+    render_cmd->add_option("--look-at", render_look_at, "camera target x y z [m]")->expected(3)
+        ->check(number_in(-1e6, 1e6));
+    render_cmd->add_option("--fov", render_fov, "vertical field of view [degrees]")
+        ->check(number_in(0, 170, Ends::kOpenLow))->capture_default_str();
+    render_cmd->add_option("--aperture", render_aperture, "thin-lens aperture radius [m] (0: pinhole)")
+        ->check(number_in(0, 10))->capture_default_str();
+    render_cmd->add_option("--focus", render_focus, "focus distance [m] (0: the look-at point)")
+        ->check(number_in(0, 1e6))->capture_default_str();
+    render_cmd->add_option("--sun-elevation", render.sun_elevation_degrees, "[degrees]")->check(number_in(-90, 90))
+        ->capture_default_str();
+    render_cmd->add_option("--sun-azimuth", render.sun_azimuth_degrees, "[degrees] from +x towards +y")
+        ->check(number_in(-360, 360))->capture_default_str();
+    render_cmd->add_option("--sun-irradiance", render.sun_irradiance, "at normal incidence (0: no sun)")
+        ->check(number_in(0, 1e6))->capture_default_str();
+    render_cmd->add_option("--sun-diameter", render.sun_diameter_degrees, "angular diameter [degrees]")
+        ->check(number_in(0, 90, Ends::kOpenLow))->capture_default_str();
+    render_cmd->add_option("--sky", render.sky_radiance, "uniform sky radiance")->check(number_in(0, 1e6))
+        ->capture_default_str();
+    render_cmd->add_option("--sky-image", render_sky_image, "latitude-longitude OpenEXR sky, z up");
+    render_cmd->add_option("--exposure", render.exposure, "stops, for the PNG")->check(number_in(-30, 30))
+        ->capture_default_str();
+  }
+
+  RenderCommandSettings render_settings() const {
+    RenderCommandSettings settings = render;
+    settings.meshes.assign(render_meshes.begin(), render_meshes.end());
+    settings.render.sampler = render_sampler == "stratified"    ? shading::SamplerKind::kStratified
+                              : render_sampler == "independent" ? shading::SamplerKind::kIndependent
+                                                                : shading::SamplerKind::kSobol;
+    settings.render.shadows = !render_no_shadows;
+    settings.render.ambient_occlusion = !render_no_ao;
+    settings.ground = !render_no_ground;
+    settings.side_by_side = render_side_by_side;
+    settings.sky_image = render_sky_image;
+    if (!render_eye.empty() || !render_look_at.empty()) {
+      shading::Camera camera;
+      if (render_eye.size() == 3) camera.position = {render_eye[0], render_eye[1], render_eye[2]};
+      if (render_look_at.size() == 3) camera.target = {render_look_at[0], render_look_at[1], render_look_at[2]};
+      camera.vertical_fov_degrees = render_fov;
+      camera.aperture_radius = render_aperture;
+      camera.focus_distance = render_focus;
+      settings.camera = camera;
+    }
+    return settings;
+  }
+
   void add_figures() {
     CLI::App* figure = app.add_subcommand("figure", "regenerate a figure of the paper");
     figure->require_subcommand(1);
@@ -352,6 +431,19 @@ struct CommandLine::Commands {
     figure9_cmd->add_option("--seed", figure_seed, "random seed")->check(seed_value())->capture_default_str();
     figure9_cmd->add_option("--count", figure9_count, "grains per cultivar for the dimension statistics")
         ->check(number_in(2, 1000))->capture_default_str();
+
+    figure13_cmd = figure->add_subcommand("13", "japonica grains soaked at 5 °C for five times, rendered with the CDRF");
+    figure13_cmd->add_option("--out", figure13_out, "output folder")->capture_default_str();
+    figure13_cmd->add_option("--soak-minutes", figure13.soak_minutes, "soak times, one grain each")
+        ->check(number_in(0, 1e4, Ends::kOpenLow))->capture_default_str();
+    figure13_cmd->add_option("--temperature", figure13.temperature_c, "soaking water [°C]")
+        ->check(number_in(0, 100))->capture_default_str();
+    figure13_cmd->add_option("--width", figure13.width, "pixels")->check(number_in(16, 16384))->capture_default_str();
+    figure13_cmd->add_option("--height", figure13.height, "pixels")->check(number_in(16, 16384))->capture_default_str();
+    figure13_cmd->add_option("--spp", figure13.samples_per_pixel, "samples per pixel")
+        ->check(number_in(1, 1 << 20))->capture_default_str();
+    figure13_cmd->add_option("--seed", figure13.seed, "random seed (the grain and the samples)")
+        ->check(seed_value())->capture_default_str();
   }
 
   ConvergenceSettings convergence_settings() const {
@@ -389,7 +481,9 @@ void CommandLine::validate() const {
   if (*c.convergence_cmd) experiments::validate(c.convergence_settings());
   if (*c.grains_cmd) experiments::validate(c.grain_library_settings());
   if (*c.figure11_cmd) experiments::validate(c.absorption);
+  if (*c.figure13_cmd) experiments::validate(c.figure13);
   if (*c.pour_cmd) experiments::validate(c.pour_settings());
+  if (*c.render_cmd) experiments::validate(c.render_settings());
   if (*c.pour_substeps_cmd) experiments::validate(c.pour_substeps_settings());
 }
 
@@ -404,7 +498,9 @@ void CommandLine::run() const {
   if (*c.figure8_cmd) grain_sizes_figure_command(c.figure_seed, c.figure8_out);
   if (*c.figure9_cmd) cultivars_figure_command(c.figure_seed, c.figure9_count, c.figure9_out);
   if (*c.figure11_cmd) water_absorption_figure_command(c.absorption, c.absorption_out);
+  if (*c.figure13_cmd) figure13_command(c.figure13, c.figure13_out);
   if (*c.pour_cmd) pour_command(c.pour_settings(), c.pour_out);
+  if (*c.render_cmd) render_command(c.render_settings(), c.render_out);
 }
 
 int run_command_line(int argc, char** argv) {

@@ -170,6 +170,11 @@ double WaterContentModel::scattering_sigma0(double absorption_percent) {
   return std::exp(s0 + s1 * absorption_percent);
 }
 
+double WaterContentModel::cdrf_albedo(double absorption_percent) {
+  constexpr double a0 = 0.7883, a1 = -0.00243;  // `rice study cdrf`, as for σ0
+  return a0 + a1 * absorption_percent;
+}
+
 GrainOptics WaterContentModel::optics(double absorption_percent) {
   constexpr double kWaterIndex = 1.333, kStarchIndex = 1.53;
   constexpr double kWaterDensity = 1000.0, kStarchDensity = 1500.0;

@@ -101,6 +101,9 @@ class WaterContentModel {
   double cohesion_ratio(double stickiness, double soak_minutes, double temperature_c) const;
   /// σ0 of eq. 8 [m] (σ = σ0 κ in radians): exp(s0 + s1 W), fitted by `rice study cdrf`.
   static double scattering_sigma0(double absorption_percent);
+  /// Albedo A of the CDRF (the fraction of light that comes back out): a0 + a1 W, fitted by
+  /// `rice study cdrf` with σ0.
+  static double cdrf_albedo(double absorption_percent);
   /// Optical parameters at water absorption W [%] (ESTIMATES; see the top of this file).
   static GrainOptics optics(double absorption_percent);
 

@@ -97,9 +97,11 @@ Eigen::VectorXd vertex_mean_curvature(const MeshVertices& V, const MeshTriangles
     throw std::invalid_argument("vertex_mean_curvature: jet_degree must be 2-4 and rings >= 1, got " +
                                 std::to_string(degree) + " and " + std::to_string(options.rings));
   }
-  // A degree-d jet has (d+1)(d+2)/2 coefficients; ask for half as many points again so the
-  // least-squares fit is overdetermined.
-  const std::size_t needed = static_cast<std::size_t>((degree + 1) * (degree + 2) / 2 * 3 / 2);
+  // A degree-d jet has (d+1)(d+2)/2 coefficients; rings are widened until the fit is
+  // overdetermined by half as many points again, or until the vertex's piece of surface has
+  // no more vertices to give.
+  const std::size_t coefficients = static_cast<std::size_t>((degree + 1) * (degree + 2) / 2);
+  const std::size_t wanted = coefficients * 3 / 2;
   constexpr int kMaxRings = 8;
   const Adjacency adjacency = vertex_adjacency(V.rows(), F);
   const MeshVertices normals = vertex_normals(V, F);
@@ -112,14 +114,24 @@ Eigen::VectorXd vertex_mean_curvature(const MeshVertices& V, const MeshTriangles
   for (int v = 0; v < static_cast<int>(V.rows()); ++v) {
     int rings = options.rings;
     gather_rings(adjacency, v, rings, mark, stamp, neighbourhood);
-    while (neighbourhood.size() < needed && rings < kMaxRings) {
+    for (std::size_t before = 0; neighbourhood.size() < wanted && neighbourhood.size() > before && rings < kMaxRings;) {
+      before = neighbourhood.size();
       gather_rings(adjacency, v, ++rings, mark, stamp, neighbourhood);
     }
-    if (neighbourhood.size() < needed) {
-      throw std::runtime_error("vertex_mean_curvature: vertex " + std::to_string(v) + " has only " +
-                               std::to_string(neighbourhood.size() - 1) + " neighbours within " +
-                               std::to_string(kMaxRings) + " rings; a jet of degree " +
-                               std::to_string(degree) + " needs " + std::to_string(needed - 1));
+    if (neighbourhood.size() < 3) {
+      throw std::runtime_error("vertex_mean_curvature: vertex " + std::to_string(v) + " belongs to no triangle");
+    }
+    if (neighbourhood.size() < coefficients) {
+      // A fragment too small for a jet (a few vertices split off a porous surface): the
+      // curvature of a sphere of its mean radius about its centroid.
+      Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+      for (const int w : neighbourhood) centroid += V.row(w).transpose();
+      centroid /= static_cast<double>(neighbourhood.size());
+      double radius = 0.0;
+      for (const int w : neighbourhood) radius += (V.row(w).transpose() - centroid).norm();
+      radius /= static_cast<double>(neighbourhood.size());
+      H(v) = radius > 0.0 ? 1.0 / radius : 0.0;
+      continue;
     }
     points.clear();
     for (const int w : neighbourhood) points.emplace_back(V(w, 0), V(w, 1), V(w, 2));

@@ -27,9 +27,11 @@ struct CurvatureOptions {
   int rings = 2;       ///< neighbourhood; widened ring by ring where it holds too few points
 };
 
-/// Mean curvature H [1/length] at every vertex (#V). Throws std::invalid_argument for
-/// out-of-range indices, degrees outside 2–4 or rings < 1, and std::runtime_error naming the
-/// vertex where no neighbourhood of up to 8 rings holds enough points (an isolated vertex).
+/// Mean curvature H [1/length] at every vertex (#V). A vertex whose piece of surface holds
+/// fewer vertices than the jet has coefficients (a fragment split off a porous surface) gets
+/// 1/r of the sphere of its fragment's mean radius. Throws std::invalid_argument for
+/// out-of-range indices, degrees outside 2–4 or rings < 1, and std::runtime_error naming a
+/// vertex in no triangle.
 Eigen::VectorXd vertex_mean_curvature(const MeshVertices& V, const MeshTriangles& F,
                                       const CurvatureOptions& options = {});
 

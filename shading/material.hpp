@@ -1,8 +1,10 @@
 // Surface materials of the renderer, as the product f(ω_o, ω_i)·cos-like term that multiplies
 // incident radiance (so each is one function of the two directions):
-//  - kRice: the CDRF diffuse term (paper eqs. 6–8), albedo/π · f_r(θ_i, σ0 |κ|), which
+//  - kRice: the CDRF diffuse term (paper eqs. 6–8), albedo/π · f_r(θ_i, σ0 max(κ, 0)), which
 //    replaces the cosine of a Lambertian surface and lets light in past the terminator on
-//    curved parts, plus the wet surface's dielectric specular lobe;
+//    convex parts, plus the wet surface's dielectric specular lobe. The CDRF's σ = σ0/r is
+//    derived for convex surfaces of radius r; in a concave pit light does not wrap around,
+//    and with σ0 |κ| the pores of a shaded grain glowed at f_r ≈ 1/π;
 //  - kDiffuse: Lambertian, albedo/π · max(cos θ_i, 0);
 //  - kGlazed: Lambertian under a dielectric coat: the diffuse part weighted by the coat's
 //    Fresnel transmittance, plus the coat's specular lobe (a glazed bowl).
@@ -27,7 +29,7 @@ enum class MaterialKind { kRice, kDiffuse, kGlazed };
 struct Material {
   MaterialKind kind = MaterialKind::kDiffuse;
   Color albedo = Color::Constant(0.8f);
-  double sigma0 = 0.0;          ///< [m], kRice: CDRF width σ = σ0 |κ|
+  double sigma0 = 0.0;          ///< [m], kRice: CDRF width σ = σ0 max(κ, 0)
   double refractive_index = 1.45;  ///< of the specular coat (kRice, kGlazed)
   double roughness = 0.15;      ///< GGX α of the specular lobe
 };
@@ -62,7 +64,7 @@ inline Color diffuse_term(const Material& m, const CdrfTable& cdrf, const Eigen:
   const double cos_i = n.dot(wi);
   switch (m.kind) {
     case MaterialKind::kRice:
-      return m.albedo * static_cast<float>(cdrf(cos_i, m.sigma0 * std::abs(curvature)) / std::numbers::pi);
+      return m.albedo * static_cast<float>(cdrf(cos_i, m.sigma0 * std::max(curvature, 0.0)) / std::numbers::pi);
     case MaterialKind::kDiffuse:
       return m.albedo * static_cast<float>(std::max(cos_i, 0.0) / std::numbers::pi);
     case MaterialKind::kGlazed: {

@@ -20,8 +20,6 @@ double rms_difference(const Image& a, const Image& b) {
 
 namespace {
 
-constexpr int kTile = 16;
-
 struct Counters {
   long long camera = 0, shadow = 0;
 };
@@ -87,7 +85,7 @@ Color shade(const RenderScene& scene, const std::vector<Material>& materials, co
 
 Image render(const RenderScene& scene, const std::vector<Material>& materials, const Lights& lights,
              const Camera& camera, const CdrfTable& cdrf, const RenderSettings& settings, RenderStats* stats,
-             const std::function<void(int, int)>& progress) {
+             const std::function<void(int, int)>& progress, const std::function<bool()>& cancelled) {
   if (settings.width < 1 || settings.height < 1 || settings.samples_per_pixel < 1)
     throw std::invalid_argument("render: width, height and samples per pixel must be at least 1");
   if (materials.empty()) throw std::invalid_argument("render: no materials");
@@ -100,16 +98,17 @@ Image render(const RenderScene& scene, const std::vector<Material>& materials, c
   }
   const auto start = std::chrono::steady_clock::now();
   Image image(settings.width, settings.height);
-  const int tiles_x = (settings.width + kTile - 1) / kTile, tiles_y = (settings.height + kTile - 1) / kTile;
-  const int tiles = tiles_x * tiles_y;
+  const int tiles_x = (settings.width + kTileSize - 1) / kTileSize;
+  const int tiles = tile_count(settings);
   std::atomic<int> done = 0;
   std::atomic<long long> camera_rays = 0, shadow_rays = 0;
   const double aspect = static_cast<double>(settings.width) / settings.height;
   tbb::parallel_for(0, tiles, [&](int tile) {
+    if (cancelled && cancelled()) return;
     Counters counters;
-    const int x0 = (tile % tiles_x) * kTile, y0 = (tile / tiles_x) * kTile;
-    for (int y = y0; y < std::min(y0 + kTile, settings.height); ++y) {
-      for (int x = x0; x < std::min(x0 + kTile, settings.width); ++x) {
+    const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
+    for (int y = y0; y < std::min(y0 + kTileSize, settings.height); ++y) {
+      for (int x = x0; x < std::min(x0 + kTileSize, settings.width); ++x) {
         const PixelSampler sampler(settings.sampler, settings.seed, x, y, settings.samples_per_pixel);
         Color sum = Color::Zero();
         for (int i = 0; i < settings.samples_per_pixel; ++i) {

@@ -38,10 +38,19 @@ struct RenderStats {
   double seconds = 0.0;
 };
 
+/// Tiles of kTileSize² pixels, the unit of work and of progress.
+constexpr int kTileSize = 16;
+inline int tile_count(const RenderSettings& s) {
+  return ((s.width + kTileSize - 1) / kTileSize) * ((s.height + kTileSize - 1) / kTileSize);
+}
+
+/// `progress(done, total)` is called after each tile, from the thread that rendered it; once
+/// `cancelled()` returns true no further tile starts (the image is then incomplete).
 /// Throws std::invalid_argument for sizes or sample counts below 1, or an instance whose
 /// material index is outside `materials`.
 Image render(const RenderScene& scene, const std::vector<Material>& materials, const Lights& lights,
              const Camera& camera, const CdrfTable& cdrf, const RenderSettings& settings,
-             RenderStats* stats = nullptr, const std::function<void(int done, int total)>& progress = {});
+             RenderStats* stats = nullptr, const std::function<void(int done, int total)>& progress = {},
+             const std::function<bool()>& cancelled = {});
 
 }  // namespace rice::shading

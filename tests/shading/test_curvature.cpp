@@ -74,12 +74,32 @@ TEST(Curvature, RefusesBadInput) {
   EXPECT_THROW(vertex_mean_curvature(mesh.V, mesh.F, {.rings = 0}), std::invalid_argument);
   mesh.F(0, 0) = 1000;
   EXPECT_THROW(vertex_mean_curvature(mesh.V, mesh.F), std::invalid_argument);
-  // A lone triangle: no vertex has enough neighbours for any jet.
-  MeshVertices V(3, 3);
-  V << 0, 0, 0, 1, 0, 0, 0, 1, 0;
+  // A vertex in no triangle.
+  MeshVertices V(4, 3);
+  V << 0, 0, 0, 1, 0, 0, 0, 1, 0, 5, 5, 5;
   MeshTriangles F(1, 3);
   F << 0, 1, 2;
   EXPECT_THROW(vertex_mean_curvature(V, F), std::runtime_error);
+}
+
+// A tetrahedron split off a surface: too few vertices for a jet, so the sphere of its mean
+// radius about its centroid (a regular tetrahedron's vertices lie on its circumsphere).
+TEST(Curvature, TinyFragmentGetsTheCurvatureOfItsSphere) {
+  auto mesh = icosphere(3);
+  const Eigen::Index n = mesh.V.rows();
+  const double r = 0.01;
+  MeshVertices V(n + 4, 3);
+  V.topRows(n) = mesh.V;
+  V.bottomRows(4) << 1, 1, 1, 1, -1, -1, -1, 1, -1, -1, -1, 1;
+  V.bottomRows(4) *= r / std::sqrt(3.0);
+  V.bottomRows(4).rowwise() += Eigen::RowVector3d(3, 0, 0);
+  MeshTriangles F(mesh.F.rows() + 4, 3);
+  F.topRows(mesh.F.rows()) = mesh.F;
+  F.bottomRows(4) << 0, 1, 2, 0, 3, 1, 0, 2, 3, 1, 3, 2;
+  F.bottomRows(4).array() += static_cast<int>(n);
+  const Eigen::VectorXd H = vertex_mean_curvature(V, F);
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(H(n + k), 1.0 / r, 1e-9);
+  EXPECT_NEAR(H(0), 1.0, 0.05);
 }
 
 }  // namespace

@@ -1,0 +1,183 @@
+// `rice render`; see render_command.hpp.
+#include "experiments/render_command.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <stdexcept>
+
+#include "experiments/interrupt.hpp"
+#include "experiments/output.hpp"
+#include "experiments/render_output.hpp"
+#include "grains/mesh_io.hpp"
+#include "grains/water_content.hpp"
+#include "shading/curvature.hpp"
+
+namespace rice::experiments {
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+std::vector<std::filesystem::path> mesh_files(const std::vector<std::filesystem::path>& inputs) {
+  std::vector<std::filesystem::path> files;
+  for (const auto& input : inputs) {
+    if (std::filesystem::is_directory(input)) {
+      std::vector<std::filesystem::path> found;
+      for (const auto& entry : std::filesystem::directory_iterator(input)) {
+        const auto ext = entry.path().extension();
+        if (entry.is_regular_file() && (ext == ".ply" || ext == ".obj")) found.push_back(entry.path());
+      }
+      std::sort(found.begin(), found.end());
+      files.insert(files.end(), found.begin(), found.end());
+    } else {
+      files.push_back(input);
+    }
+  }
+  return files;
+}
+
+Eigen::Vector3d direction_from(double elevation_degrees, double azimuth_degrees) {
+  const double e = elevation_degrees * kDegree, a = azimuth_degrees * kDegree;
+  return {std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e)};
+}
+
+}  // namespace
+
+shading::Material rice_material(double absorption_percent) {
+  return {.kind = shading::MaterialKind::kRice,
+          .albedo = shading::Color::Constant(static_cast<float>(grains::WaterContentModel::cdrf_albedo(absorption_percent))),
+          .sigma0 = grains::WaterContentModel::scattering_sigma0(absorption_percent),
+          .refractive_index = grains::WaterContentModel::optics(absorption_percent).refractive_index,
+          .roughness = 0.25};
+}
+
+int add_grain_prototype(shading::RenderScene& scene, const shading::MeshVertices& V, const shading::MeshTriangles& F) {
+  return scene.add_prototype(V, F, shading::vertex_mean_curvature(V, F));
+}
+
+shading::Camera framing_camera(const Eigen::AlignedBox3f& bounds, double elevation_degrees, double azimuth_degrees,
+                               double vertical_fov_degrees, double aspect) {
+  const Eigen::Vector3d centre = bounds.center().cast<double>();
+  const double radius = 0.5 * bounds.diagonal().norm();
+  const double half = 0.5 * vertical_fov_degrees * kDegree;
+  const double fit = std::min(std::tan(half), std::tan(half) * aspect);  // the narrower side
+  shading::Camera camera;
+  camera.target = centre;
+  camera.position = centre + direction_from(elevation_degrees, azimuth_degrees) * (1.05 * radius / std::sin(std::atan(fit)));
+  camera.vertical_fov_degrees = vertical_fov_degrees;
+  return camera;
+}
+
+void validate(const RenderCommandSettings& s) {
+  const auto files = mesh_files(s.meshes);
+  if (files.empty()) throw std::invalid_argument("render: give --meshes: mesh files, or folders holding .ply or .obj files");
+  for (const auto& f : files)
+    if (!std::filesystem::is_regular_file(f)) throw std::invalid_argument("render: " + f.string() + ": no such file");
+  if (!(s.absorption_percent >= 0.0 && s.absorption_percent <= 100.0))
+    throw std::invalid_argument("render: --absorption must be in [0, 100] %");
+  if (s.render.width < 1 || s.render.height < 1 || s.render.width > 16384 || s.render.height > 16384)
+    throw std::invalid_argument("render: --width and --height must be in [1, 16384]");
+  if (s.render.samples_per_pixel < 1 || s.render.samples_per_pixel > 1 << 20)
+    throw std::invalid_argument("render: --spp must be in [1, 1048576]");
+  if (!s.sky_image.empty() && !std::filesystem::is_regular_file(s.sky_image))
+    throw std::invalid_argument("render: --sky-image " + s.sky_image.string() + ": no such file");
+}
+
+void render_command(const RenderCommandSettings& settings, const std::filesystem::path& folder) {
+  validate(settings);
+  const auto start = std::chrono::steady_clock::now();
+  shading::RenderScene scene;
+  Eigen::AlignedBox3d box;
+  const auto files = mesh_files(settings.meshes);
+  {
+    Progress progress("render: meshes and curvature", static_cast<int>(files.size()));
+    double next_x = 0.0;  // side by side: the next mesh's left edge
+    for (size_t i = 0; i < files.size(); ++i) {
+      stop_point();
+      grains::SurfaceMesh mesh = grains::read_surface_mesh(files[i]);
+      Eigen::Affine3d place = Eigen::Affine3d::Identity();
+      if (settings.side_by_side) {
+        const Eigen::Vector3d lo = mesh.V.colwise().minCoeff(), hi = mesh.V.colwise().maxCoeff();
+        place.translation() = Eigen::Vector3d(next_x - lo.x(), -0.5 * (lo.y() + hi.y()), -lo.z());
+        next_x += 1.15 * (hi.x() - lo.x());
+      }
+      scene.add_instance(add_grain_prototype(scene, mesh.V, mesh.F), place, 0);
+      for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) box.extend(place * mesh.V.row(v).transpose());
+      progress.update(static_cast<int>(i + 1));
+    }
+    progress.finish();
+  }
+  std::vector<shading::Material> materials = {rice_material(settings.absorption_percent),
+                                              {.kind = shading::MaterialKind::kDiffuse,
+                                               .albedo = shading::Color::Constant(0.35f)}};
+  if (settings.ground) {
+    // A square four times the meshes' extent, just under their lowest point.
+    const double half = 2.0 * box.diagonal().head<2>().maxCoeff() + 1e-3, z = box.min().z() - 1e-6;
+    const Eigen::Vector2d c = box.center().head<2>();
+    shading::MeshVertices V(4, 3);
+    V << c.x() - half, c.y() - half, z, c.x() + half, c.y() - half, z, c.x() + half, c.y() + half, z, c.x() - half,
+        c.y() + half, z;
+    shading::MeshTriangles F(2, 3);
+    F << 0, 1, 2, 0, 2, 3;
+    scene.add_instance(scene.add_prototype(V, F), Eigen::Affine3d::Identity(), 1);
+  }
+  scene.commit();
+
+  shading::Lights lights;
+  if (settings.sun_irradiance > 0.0) {
+    lights.suns.push_back({.direction = direction_from(settings.sun_elevation_degrees, settings.sun_azimuth_degrees).cast<float>(),
+                           .angular_radius = static_cast<float>(0.5 * settings.sun_diameter_degrees * kDegree),
+                           .irradiance = shading::Color::Constant(static_cast<float>(settings.sun_irradiance))});
+  }
+  if (!settings.sky_image.empty()) {
+    shading::Image sky = read_exr(settings.sky_image);
+    lights.environment.width = sky.width;
+    lights.environment.height = sky.height;
+    lights.environment.image = std::move(sky.pixels);
+  } else {
+    lights.environment.constant = shading::Color::Constant(static_cast<float>(settings.sky_radiance));
+  }
+  const double aspect = static_cast<double>(settings.render.width) / settings.render.height;
+  Eigen::AlignedBox3f grains_box(box.min().cast<float>(), box.max().cast<float>());
+  const shading::Camera camera = settings.camera ? *settings.camera : framing_camera(grains_box, 35.0, -60.0, 30.0, aspect);
+
+  const shading::CdrfTable cdrf(513, 513);
+  make_output_folder(folder);
+  shading::RenderStats stats;
+  {
+    Progress progress("render: tiles", shading::tile_count(settings.render));
+    const shading::Image image = shading::render(scene, materials, lights, camera, cdrf, settings.render, &stats,
+                                                 [&](int done, int) { progress.update(done); }, stop_requested);
+    progress.finish();
+    stop_point();
+    write_png(folder / "render.png", tone_map(image, settings.exposure));
+    write_exr(folder / "render.exr", image);
+  }
+  const double rays = static_cast<double>(stats.camera_rays + stats.shadow_rays);
+  write_file_atomically(
+      folder / "run_info.txt",
+      run_info({{"command", "render"},
+                {"meshes", cell(static_cast<long>(files.size()))},
+                {"absorption_percent", cell(settings.absorption_percent)},
+                {"sigma0_m", cell(materials[0].sigma0)},
+                {"width", cell(settings.render.width)},
+                {"height", cell(settings.render.height)},
+                {"samples_per_pixel", cell(settings.render.samples_per_pixel)},
+                {"sampler", settings.render.sampler == shading::SamplerKind::kSobol        ? "sobol"
+                            : settings.render.sampler == shading::SamplerKind::kStratified ? "stratified"
+                                                                                           : "independent"},
+                {"seed", cell(static_cast<long>(settings.render.seed))},
+                {"shadows", settings.render.shadows ? "on" : "off"},
+                {"ambient_occlusion", settings.render.ambient_occlusion ? "on" : "off"},
+                {"camera_rays", cell(static_cast<long>(stats.camera_rays))},
+                {"shadow_rays", cell(static_cast<long>(stats.shadow_rays))},
+                {"render_s", cell(stats.seconds)},
+                {"rays_per_second", cell(rays / stats.seconds)},
+                {"wall_s", cell(seconds_since(start))}}));
+  std::printf("render: %d x %d at %d spp in %.1f s (%.2f M rays/s)\n", settings.render.width, settings.render.height,
+              settings.render.samples_per_pixel, stats.seconds, 1e-6 * rays / stats.seconds);
+}
+
+}  // namespace rice::experiments
