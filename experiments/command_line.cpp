@@ -350,7 +350,7 @@ struct CommandLine::Commands {
 
   void add_render() {
     render_cmd = app.add_subcommand("render", "grain meshes rendered as cooked rice with the CDRF (PNG and EXR)");
-    render_cmd->add_option("--meshes", render_meshes, "mesh files (PLY, OBJ), or folders of them")->required();
+    render_cmd->add_option("--meshes", render_meshes, "mesh files (PLY, OBJ), or folders of them (required)");
     render_cmd->add_option("--out", render_out, "output folder")->capture_default_str();
     render_cmd->add_option("--absorption", render.absorption_percent, "water absorption W [%]: sigma0 and albedo")
         ->check(number_in(0, 100))->capture_default_str();
