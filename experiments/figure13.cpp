@@ -15,6 +15,7 @@
 #include "grains/cultivar.hpp"
 #include "grains/grain_generator.hpp"
 #include "grains/water_content.hpp"
+#include "shading/subsurface_bake.hpp"
 
 namespace rice::experiments {
 
@@ -27,6 +28,8 @@ void validate(const Figure13Settings& s) {
     throw std::invalid_argument("figure 13: --width and --height must be in [16, 16384]");
   if (s.samples_per_pixel < 1 || s.samples_per_pixel > 1 << 20)
     throw std::invalid_argument("figure 13: --spp must be in [1, 1048576]");
+  if (s.photons < 1000 || s.photons > 10'000'000'000LL)
+    throw std::invalid_argument("figure 13: --photons must be in [1000, 1e10]");
 }
 
 void figure13_command(const Figure13Settings& settings, const std::filesystem::path& folder) {
@@ -80,58 +83,104 @@ void figure13_command(const Figure13Settings& settings, const std::filesystem::p
   camera.position = camera.target + distance * Eigen::Vector3d(0.0, -std::cos(elevation), std::sin(elevation));
 
   const shading::CdrfTable cdrf(513, 513);
-  shading::RenderSettings render{.width = settings.width, .height = settings.height,
-                                 .samples_per_pixel = settings.samples_per_pixel, .seed = settings.seed};
-  shading::RenderStats stats;
-  Progress progress("figure 13: tiles", shading::tile_count(render));
-  const shading::Image image = shading::render(scene, materials, lights, camera, cdrf, render, &stats,
-                                               [&](int done, int) { progress.update(done); }, stop_requested);
-  progress.finish();
-  stop_point();
+  const shading::RenderSettings render{.width = settings.width, .height = settings.height,
+                                       .samples_per_pixel = settings.samples_per_pixel, .seed = settings.seed};
+  auto render_row = [&](const std::vector<shading::Material>& row_materials, const std::string& label,
+                        shading::RenderStats& stats) {
+    Progress progress("figure 13: " + label + " tiles", shading::tile_count(render));
+    shading::Image image = shading::render(scene, row_materials, lights, camera, cdrf, render, &stats,
+                                           [&](int done, int) { progress.update(done); }, stop_requested);
+    progress.finish();
+    stop_point();
+    return image;
+  };
+  shading::RenderStats cdrf_stats, reference_stats;
+  const shading::Image image = render_row(materials, "CDRF", cdrf_stats);
 
-  // Each grain's mean radiance on the sun's side and on the far side, from the pixels whose
-  // centre ray hits it.
-  std::vector<double> lit(n, 0.0), shaded(n, 0.0);
+  // The reference: each grain's subsurface light baked by the random walk in its own medium.
+  std::vector<int> grain_instances(n);
+  std::vector<shading::Medium> media;
+  std::vector<shading::Material> reference_materials = materials;
+  for (int i = 0; i < n; ++i) {
+    grain_instances[i] = i;
+    const grains::GrainOptics optics = grains::WaterContentModel::optics(absorption[i]);
+    media.push_back({optics.reduced_scattering, optics.absorption, 0.0, optics.refractive_index});
+    reference_materials[i].kind = shading::MaterialKind::kSubsurfaceReference;
+  }
+  shading::BakeStats bake_stats;
+  {
+    Progress progress("figure 13: random-walk bake", 1);
+    shading::bake_subsurface(scene, grain_instances, media, lights,
+                             {.photons_per_light = settings.photons, .seed = settings.seed}, &bake_stats);
+    progress.finish();
+  }
+  stop_point();
+  const shading::Image reference = render_row(reference_materials, "reference", reference_stats);
+
+  // Per grain, from the pixels whose centre ray hits it: mean radiance on the sun's side and
+  // on the far side, in both images, and the RMS difference between them.
+  std::vector<double> lit(n, 0.0), shaded(n, 0.0), reference_lit(n, 0.0), reference_shaded(n, 0.0), squared(n, 0.0);
   std::vector<int> lit_count(n, 0), shaded_count(n, 0);
   for (int y = 0; y < settings.height; ++y)
     for (int x = 0; x < settings.width; ++x) {
       const shading::CameraRay r = camera.ray((x + 0.5) / settings.width, (y + 0.5) / settings.height, 0, 0, aspect);
       const auto hit = scene.intersect({r.origin, r.direction});
       if (!hit || hit->instance >= n) continue;
+      const int g = hit->instance;
       const bool sunny = hit->shading_normal.dot(lights.suns[0].direction.normalized()) > 0.0f;
-      (sunny ? lit : shaded)[hit->instance] += image.at(x, y).mean();
-      ++(sunny ? lit_count : shaded_count)[hit->instance];
+      (sunny ? lit : shaded)[g] += image.at(x, y).mean();
+      (sunny ? reference_lit : reference_shaded)[g] += reference.at(x, y).mean();
+      ++(sunny ? lit_count : shaded_count)[g];
+      squared[g] += (image.at(x, y) - reference.at(x, y)).square().mean();
     }
   CsvTable table({"soak_minutes", "absorption_percent", "sigma0_mm", "albedo", "lit_radiance", "shaded_radiance",
-                  "shaded_over_lit"});
+                  "shaded_over_lit", "reference_lit_radiance", "reference_shaded_radiance", "reference_shaded_over_lit",
+                  "rms_difference", "relative_rms_difference"});
+  double worst_relative = 0.0;
   for (int i = 0; i < n; ++i) {
+    const int pixels = std::max(1, lit_count[i] + shaded_count[i]);
+    const double mean = (lit[i] + shaded[i]) / pixels;
     lit[i] /= std::max(1, lit_count[i]);
     shaded[i] /= std::max(1, shaded_count[i]);
+    reference_lit[i] /= std::max(1, lit_count[i]);
+    reference_shaded[i] /= std::max(1, shaded_count[i]);
+    const double rms = std::sqrt(squared[i] / pixels);
+    worst_relative = std::max(worst_relative, rms / mean);
     table.add_row({cell(settings.soak_minutes[i]), cell(absorption[i]), cell(1e3 * materials[i].sigma0),
                    cell(static_cast<double>(materials[i].albedo[0])), cell(lit[i]), cell(shaded[i]),
-                   cell(shaded[i] / lit[i])});
+                   cell(shaded[i] / lit[i]), cell(reference_lit[i]), cell(reference_shaded[i]),
+                   cell(reference_shaded[i] / reference_lit[i]), cell(rms), cell(rms / mean)});
   }
   write_file_atomically(folder / "figure13.csv", table.text());
   write_png(folder / "figure13_render.png", tone_map(image, 0.0));
   write_exr(folder / "figure13_render.exr", image);
+  write_png(folder / "figure13_reference.png", tone_map(reference, 0.0));
+  write_exr(folder / "figure13_reference.exr", reference);
 
   std::string labels;
   for (int i = 0; i < n; ++i) {
     labels += "set label " + std::to_string(i + 1) + " '" + fixed(settings.soak_minutes[i], 0) + " min, W = " +
               fixed(absorption[i], 1) + "%' at graph " + fixed((i + 0.5) / n, 3) + ", 0.08 center front tc rgb 'white'\n";
   }
-  render_plot(folder, "figure13", "set terminal pngcairo size " + std::to_string(settings.width) + "," +
-                                      std::to_string(settings.height + 60) + R"(
+  const std::string size = std::to_string(settings.width) + "," + std::to_string(2 * settings.height + 80);
+  const std::string range = "set xrange [0:" + std::to_string(settings.width - 1) + "]\nset yrange [0:" +
+                            std::to_string(settings.height - 1) + "]\n";
+  render_plot(folder, "figure13", "set terminal pngcairo size " + size + R"(
 set output 'figure13.png'
-set title 'Soaked longer at )" + fixed(settings.temperature_c, 0) + R"( °C, grains scatter wider: shaded/lit radiance )" +
-                                      fixed(shaded.front() / lit.front(), 2) + " → " + fixed(shaded.back() / lit.back(), 2) + R"('
+set multiplot layout 2,1 title 'Soaked longer at )" + fixed(settings.temperature_c, 0) +
+                                      R"( °C, grains scatter wider: shaded/lit )" + fixed(shaded.front() / lit.front(), 2) +
+                                      " → " + fixed(shaded.back() / lit.back(), 2) + " (CDRF), " +
+                                      fixed(reference_shaded.front() / reference_lit.front(), 2) + " → " +
+                                      fixed(reference_shaded.back() / reference_lit.back(), 2) + R"( (random walk)'
 unset border
 unset tics
 unset key
-set margins 0, 0, 0, 4
-set xrange [0:)" + std::to_string(settings.width - 1) + R"(]
-set yrange [0:)" + std::to_string(settings.height - 1) + R"(]
-)" + labels + R"(plot 'figure13_render.png' binary filetype=png with rgbimage
+set margins 0, 0, 0, 3
+)" + range + labels + R"(set title 'CDRF'
+plot 'figure13_render.png' binary filetype=png with rgbimage
+set title 'random-walk reference (CDRF differs by up to )" + fixed(100 * worst_relative, 0) + R"(% RMS per grain)'
+plot 'figure13_reference.png' binary filetype=png with rgbimage
+unset multiplot
 )");
   write_file_atomically(folder / "run_info.txt",
                         run_info({{"figure", "13"},
@@ -139,11 +188,18 @@ set yrange [0:)" + std::to_string(settings.height - 1) + R"(]
                                   {"width", cell(settings.width)},
                                   {"height", cell(settings.height)},
                                   {"samples_per_pixel", cell(settings.samples_per_pixel)},
+                                  {"photons_per_light_per_grain", cell(static_cast<long>(settings.photons))},
                                   {"seed", cell(static_cast<long>(settings.seed))},
-                                  {"render_s", cell(stats.seconds)},
+                                  {"cdrf_render_s", cell(cdrf_stats.seconds)},
+                                  {"reference_bake_s", cell(bake_stats.seconds)},
+                                  {"reference_render_s", cell(reference_stats.seconds)},
+                                  {"worst_relative_rms_difference", cell(worst_relative)},
                                   {"wall_s", cell(seconds_since(start))}}));
-  std::printf("figure 13: shaded/lit radiance %.3f at %.0f min to %.3f at %.0f min\n", shaded.front() / lit.front(),
-              settings.soak_minutes.front(), shaded.back() / lit.back(), settings.soak_minutes.back());
+  std::printf("figure 13: shaded/lit %.3f -> %.3f (CDRF), %.3f -> %.3f (random walk); CDRF %.1f s, reference %.1f s "
+              "bake + %.1f s render; worst per-grain RMS difference %.0f%%\n",
+              shaded.front() / lit.front(), shaded.back() / lit.back(), reference_shaded.front() / reference_lit.front(),
+              reference_shaded.back() / reference_lit.back(), cdrf_stats.seconds, bake_stats.seconds,
+              reference_stats.seconds, 100 * worst_relative);
 }
 
 }  // namespace rice::experiments

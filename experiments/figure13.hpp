@@ -1,9 +1,11 @@
 // Paper Figure 13: japonica grains soaked at 5 °C for five soak times, rendered with the CDRF
 // at each soak's water absorption (σ0 and albedo from the water-content model), side by side
-// under a low sun, so that the wetter grains' wider scattering shows at the terminator.
-// Writes figure13.png (labelled), figure13_render.png and .exr (the bare render),
-// figure13.csv (soak, W, σ0, albedo, mean radiance of each grain's lit and shadowed halves)
-// and run_info.txt.
+// under a high sun behind them, so that the wetter grains' wider scattering shows at the
+// terminator; and the same row with the random-walk reference (each grain's subsurface light
+// baked by photons in its own medium, shading/subsurface_bake.hpp).
+// Writes figure13.png (both rows, labelled), figure13_render.{png,exr} (CDRF),
+// figure13_reference.{png,exr}, figure13.csv (per grain: soak, W, σ0, albedo, mean radiance
+// of its lit and shaded sides in both, their RMS difference) and run_info.txt (times).
 #pragma once
 
 #include <cstdint>
@@ -17,6 +19,7 @@ struct Figure13Settings {
   double temperature_c = 5.0;
   int width = 1000, height = 250;
   int samples_per_pixel = 64;
+  long long photons = 300'000;  ///< reference: per grain, per light
   std::uint64_t seed = 1;
 };
 

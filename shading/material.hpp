@@ -7,7 +7,10 @@
 //    and with σ0 |κ| the pores of a shaded grain glowed at f_r ≈ 1/π;
 //  - kDiffuse: Lambertian, albedo/π · max(cos θ_i, 0);
 //  - kGlazed: Lambertian under a dielectric coat: the diffuse part weighted by the coat's
-//    Fresnel transmittance, plus the coat's specular lobe (a glazed bowl).
+//    Fresnel transmittance, plus the coat's specular lobe (a glazed bowl);
+//  - kSubsurfaceReference: rice whose diffuse radiance was baked by the random walk
+//    (subsurface_bake.hpp) and is read at the hit, not computed from the lights here; the
+//    same specular lobe as kRice.
 // The specular lobe is a GGX microfacet BRDF (Walter et al. 2007) with unpolarised Fresnel
 // reflectance and the height-correlated Smith shadowing.
 #pragma once
@@ -24,7 +27,7 @@
 
 namespace rice::shading {
 
-enum class MaterialKind { kRice, kDiffuse, kGlazed };
+enum class MaterialKind { kRice, kDiffuse, kGlazed, kSubsurfaceReference };
 
 struct Material {
   MaterialKind kind = MaterialKind::kDiffuse;
@@ -67,6 +70,8 @@ inline Color diffuse_term(const Material& m, const CdrfTable& cdrf, const Eigen:
       return m.albedo * static_cast<float>(cdrf(cos_i, m.sigma0 * std::max(curvature, 0.0)) / std::numbers::pi);
     case MaterialKind::kDiffuse:
       return m.albedo * static_cast<float>(std::max(cos_i, 0.0) / std::numbers::pi);
+    case MaterialKind::kSubsurfaceReference:
+      return Color::Zero();  // baked: ShadingPoint::baked
     case MaterialKind::kGlazed: {
       if (cos_i <= 0.0 || n.dot(wo) <= 0.0) return Color::Zero();
       const double through = (1.0 - fresnel_reflectance(cos_i, m.refractive_index)) *

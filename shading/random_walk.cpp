@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "shading/fresnel.hpp"
+#include "shading/scattering.hpp"
 
 namespace rice::shading {
 namespace {
@@ -27,21 +28,6 @@ void check(const Medium& m, double radius, const RandomWalkOptions& o) {
         "sphere_exitance: needs radius > 0, scattering and absorption >= 0 with a positive sum, |anisotropy| < 1, "
         "refractive index > 0, and photons, bins and batch >= 1");
   }
-}
-
-// A direction at angle acos(mu) from d, uniformly around it.
-Vector3d rotate_about(const Vector3d& d, double mu, double phi) {
-  const Vector3d a = std::abs(d.x()) < 0.9 ? Vector3d::UnitX() : Vector3d::UnitY();
-  const Vector3d u = d.cross(a).normalized(), v = d.cross(u);
-  const double s = std::sqrt(std::max(0.0, 1.0 - mu * mu));
-  return mu * d + s * (std::cos(phi) * u + std::sin(phi) * v);
-}
-
-// Cosine of the Henyey–Greenstein scattering angle by inversion of its CDF.
-double sample_henyey_greenstein(double g, double u) {
-  if (std::abs(g) < 1e-6) return 2.0 * u - 1.0;
-  const double q = (1.0 - g * g) / (1.0 - g + 2.0 * g * u);
-  return std::clamp((1.0 + g * g - q * q) / (2.0 * g), -1.0, 1.0);
 }
 
 // Distance along unit d from x (inside or on the sphere) to the sphere.
@@ -104,13 +90,6 @@ BatchTally trace_batch(const Medium& medium, double radius, int bins, long long 
     }
   }
   return tally;
-}
-
-std::uint64_t split_mix(std::uint64_t z) {
-  z += 0x9e3779b97f4a7c15ULL;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -135,6 +136,45 @@ void RenderScene::commit() {
 
 Eigen::AlignedBox3f RenderScene::bounds() const { return bounds_; }
 
+void RenderScene::set_vertex_values(int instance, std::vector<float> values) {
+  Instance& i = instances_.at(instance);
+  if (values.size() != prototypes_[i.prototype]->positions.size())
+    throw std::invalid_argument("RenderScene: " + std::to_string(values.size()) + " vertex values for " +
+                                std::to_string(prototypes_[i.prototype]->positions.size()) + " vertices");
+  i.vertex_values = std::move(values);
+}
+
+Eigen::Vector3i RenderScene::triangle(int instance, int primitive) const {
+  return prototypes_[instances_.at(instance).prototype]->triangles.at(primitive);
+}
+
+int RenderScene::vertex_count(int instance) const {
+  return static_cast<int>(prototypes_[instances_.at(instance).prototype]->positions.size());
+}
+
+std::vector<double> RenderScene::vertex_areas(int instance) const {
+  const Instance& i = instances_.at(instance);
+  const Prototype& p = *prototypes_[i.prototype];
+  const double scale = 1.0 / i.curvature_scale;  // uniform scale s: areas grow by s²
+  std::vector<double> area(p.positions.size(), 0.0);
+  for (const Eigen::Vector3i& t : p.triangles) {
+    const double a = 0.5 * scale * scale *
+                     (p.positions[t[1]] - p.positions[t[0]]).cross(p.positions[t[2]] - p.positions[t[0]]).cast<double>().norm();
+    for (int k = 0; k < 3; ++k) area[t[k]] += a / 3.0;
+  }
+  return area;
+}
+
+std::pair<Eigen::Vector3f, float> RenderScene::bounding_sphere(int instance) const {
+  const Instance& i = instances_.at(instance);
+  const Prototype& p = *prototypes_[i.prototype];
+  Eigen::AlignedBox3f box;
+  for (const Eigen::Vector3f& x : p.positions) box.extend(i.linear * x + i.translation);
+  float radius = 0.0f;
+  for (const Eigen::Vector3f& x : p.positions) radius = std::max(radius, (i.linear * x + i.translation - box.center()).norm());
+  return {box.center(), radius};
+}
+
 namespace {
 
 RTCRay embree_ray(const Ray& ray) {
@@ -184,8 +224,13 @@ std::optional<ShadingPoint> RenderScene::intersect(const Ray& ray) const {
     p.curvature = instance.curvature_scale * (w * prototype.curvature[tri[0]] + u * prototype.curvature[tri[1]] +
                                               v * prototype.curvature[tri[2]]);
   }
+  if (!instance.vertex_values.empty()) {
+    p.baked = w * instance.vertex_values[tri[0]] + u * instance.vertex_values[tri[1]] + v * instance.vertex_values[tri[2]];
+  }
   p.material = instance.material;
   p.instance = static_cast<int>(hit.hit.instID[0]);
+  p.primitive = static_cast<int>(hit.hit.primID);
+  p.barycentric = Eigen::Vector3f(w, u, v);
   return p;
 }
 

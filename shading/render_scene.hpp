@@ -11,6 +11,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "shading/curvature.hpp"
@@ -26,8 +27,11 @@ struct ShadingPoint {
   float t = 0.0f;
   Eigen::Vector3f position, geometric_normal, shading_normal;  ///< normals unit, outward
   double curvature = 0.0;  ///< mean curvature [1/m] in world units
+  double baked = 0.0;      ///< interpolated per-vertex value set by set_vertex_values (0 if none)
   int material = 0;
   int instance = 0;
+  int primitive = 0;                      ///< triangle of the instance's prototype
+  Eigen::Vector3f barycentric{1, 0, 0};   ///< weights of the triangle's three vertices
 };
 
 class RenderScene {
@@ -54,6 +58,19 @@ class RenderScene {
   /// [t_min, t_max].
   bool occluded(const Ray& ray, int ignore = -1) const;
 
+  /// Per-vertex values of one instance (its prototype's #V), read back interpolated as
+  /// ShadingPoint::baked; used for the subsurface reference's exitance. Callable after commit.
+  void set_vertex_values(int instance, std::vector<float> values);
+  /// The prototype's vertex indices of triangle `primitive` of `instance`.
+  Eigen::Vector3i triangle(int instance, int primitive) const;
+  /// Vertex count of an instance's prototype.
+  int vertex_count(int instance) const;
+  /// Each vertex's share of the instance's surface in world units: a third of the area of
+  /// every triangle around it (#V, summing to the surface area).
+  std::vector<double> vertex_areas(int instance) const;
+  /// World-space bounding sphere of one instance: centre and radius.
+  std::pair<Eigen::Vector3f, float> bounding_sphere(int instance) const;
+
   /// World-space box of all instances (after commit).
   Eigen::AlignedBox3f bounds() const;
   /// Offset along the normal for rays leaving a surface: 1e-6 of the scene's diagonal.
@@ -70,6 +87,7 @@ class RenderScene {
     Eigen::Matrix3f linear, normal_matrix;
     Eigen::Vector3f translation;
     float curvature_scale = 1.0f;
+    std::vector<float> vertex_values;  // empty: none
   };
   struct Embree;
 

@@ -39,7 +39,7 @@ Color shade(const RenderScene& scene, const std::vector<Material>& materials, co
     ng = -ng;
     n = -n;
   }
-  const int self = material.kind == MaterialKind::kRice ? hit->instance : -1;
+  const int self = material.kind == MaterialKind::kRice ? hit->instance : -1;  // see renderer.hpp
   const float offset = scene.ray_offset();
   auto visible = [&](const Eigen::Vector3f& wi, float distance, bool test) {
     if (!test) return true;
@@ -49,6 +49,7 @@ Color shade(const RenderScene& scene, const std::vector<Material>& materials, co
   };
 
   Color radiance = Color::Zero();
+  if (material.kind == MaterialKind::kSubsurfaceReference) radiance += static_cast<float>(hit->baked);
   int pair = 2;
   double a = 0.0, b = 0.0;
   for (const Sun& sun : lights.suns) {

@@ -1,0 +1,150 @@
+// Photon-traced subsurface reference on meshes (subsurface_bake.hpp).
+#include "shading/subsurface_bake.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <stdexcept>
+
+#include "shading/fresnel.hpp"
+#include "shading/scattering.hpp"
+
+namespace rice::shading {
+namespace {
+
+using Eigen::Vector3d;
+using Eigen::Vector3f;
+constexpr double kPi = std::numbers::pi;
+
+// A light as the bake sees it: directions photons travel along, and the flux each carries.
+struct PhotonSource {
+  bool sky = false;
+  Vector3d towards_light = Vector3d::UnitZ();  // sun only
+  double sun_half_angle = 0.0;
+  Color radiance_or_irradiance = Color::Zero();
+};
+
+// Walks one photon from its entry; splats escaping flux (times `flux`) onto `tally`.
+void walk(const RenderScene& scene, int instance, const Medium& medium, const ShadingPoint& entry,
+          const Vector3d& travel, double flux, std::mt19937_64& rng, std::vector<double>& tally) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double eta = medium.refractive_index;
+  const double sigma_t = medium.scattering + medium.absorption;
+  const double survival = medium.scattering / sigma_t;
+  const float offset = scene.ray_offset();
+  const Vector3d n = entry.geometric_normal.cast<double>();
+  double weight = flux * (1.0 - fresnel_reflectance(-travel.dot(n), eta));
+  Vector3d d = refract(travel, n, eta);
+  Vector3d x = entry.position.cast<double>() - offset * n;
+  bool scattered = false;  // light crossing without scattering is refraction, not tallied
+  constexpr int kMaxEvents = 100'000;
+  for (int event = 0; event < kMaxEvents && weight > 0.0; ++event) {
+    const auto boundary = scene.intersect({x.cast<float>(), d.cast<float>()});
+    if (!boundary) return;  // left through a crack in the mesh: lost
+    const double free_path = -std::log(1.0 - unit(rng)) / sigma_t;
+    if (free_path < boundary->t) {
+      x += free_path * d;
+      weight *= survival;
+      d = rotate_about(d, sample_henyey_greenstein(medium.anisotropy, unit(rng)), 2 * kPi * unit(rng));
+      scattered = true;
+    } else {
+      if (boundary->instance != instance) return;  // into another body (an overlap): lost
+      const Vector3d normal = boundary->geometric_normal.cast<double>();
+      const double reflectance = fresnel_reflectance(d.dot(normal), 1.0 / eta);
+      const double out = weight * (1.0 - reflectance);
+      if (scattered) {
+        const Eigen::Vector3i tri = scene.triangle(instance, boundary->primitive);
+        for (int k = 0; k < 3; ++k) tally[tri[k]] += out * boundary->barycentric[k];
+      }
+      weight *= reflectance;
+      x = boundary->position.cast<double>() - offset * normal;
+      d -= 2.0 * d.dot(normal) * normal;
+    }
+    if (weight < 1e-4 * flux) {  // Russian roulette
+      if (unit(rng) < 0.1) weight *= 10.0;
+      else weight = 0.0;
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<std::vector<float>> bake_subsurface(RenderScene& scene, const std::vector<int>& instances,
+                                                const std::vector<Medium>& media, const Lights& lights,
+                                                const BakeSettings& settings, BakeStats* stats) {
+  if (instances.size() != media.size()) throw std::invalid_argument("bake_subsurface: one medium per instance");
+  if (settings.photons_per_light < 1 || settings.batch < 1)
+    throw std::invalid_argument("bake_subsurface: photons and batch must be at least 1");
+  if (!lights.environment.image.empty())
+    throw std::invalid_argument("bake_subsurface: sky images are not supported, only a uniform sky");
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<PhotonSource> sources;
+  for (const Sun& sun : lights.suns)
+    sources.push_back({false, sun.direction.cast<double>().normalized(), sun.angular_radius, sun.irradiance});
+  if (!lights.environment.empty()) sources.push_back({true, Vector3d::UnitZ(), 0.0, lights.environment.constant});
+
+  std::vector<std::vector<float>> exitance;
+  long long traced = 0;
+  for (std::size_t k = 0; k < instances.size(); ++k) {
+    const int instance = instances[k];
+    const auto [centre, radius] = scene.bounding_sphere(instance);
+    // Flux per photon over the disc of area π R² (per colour channel, grey media here):
+    // sun E π R² / N; sky L π R² 4π / N (directions uniform over the sphere).
+    std::vector<double> sum(static_cast<std::size_t>(scene.vertex_count(instance)), 0.0);
+    for (std::size_t s = 0; s < sources.size(); ++s) {
+      const PhotonSource& source = sources[s];
+      const double disc = kPi * radius * radius;
+      const double flux = disc * (source.sky ? 4.0 * kPi : 1.0) / static_cast<double>(settings.photons_per_light);
+      const long long batches = (settings.photons_per_light + settings.batch - 1) / settings.batch;
+      std::vector<std::vector<double>> partial(static_cast<std::size_t>(batches));
+      tbb::parallel_for(0LL, batches, [&](long long b) {
+        std::vector<double> tally(sum.size(), 0.0);
+        std::mt19937_64 rng(split_mix(settings.seed ^ split_mix((k << 40) ^ (s << 32) ^ static_cast<std::uint64_t>(b))));
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        const long long n = std::min<long long>(settings.batch, settings.photons_per_light - b * settings.batch);
+        for (long long p = 0; p < n; ++p) {
+          Vector3d towards = source.towards_light;
+          if (source.sky) {
+            const double z = 1.0 - 2.0 * unit(rng), r = std::sqrt(std::max(0.0, 1.0 - z * z)), phi = 2 * kPi * unit(rng);
+            towards = Vector3d(r * std::cos(phi), r * std::sin(phi), z);
+          } else if (source.sun_half_angle > 0.0) {
+            const double half = std::sin(0.5 * source.sun_half_angle);
+            towards = rotate_about(towards, 1.0 - unit(rng) * 2.0 * half * half, 2 * kPi * unit(rng));
+          }
+          const Vector3d u = towards.cross(std::abs(towards.x()) < 0.9 ? Vector3d::UnitX() : Vector3d::UnitY()).normalized();
+          const Vector3d v = towards.cross(u);
+          const double rho = radius * std::sqrt(unit(rng)), angle = 2 * kPi * unit(rng);
+          const Vector3d origin = centre.cast<double>() + 2.0 * radius * towards +
+                                  rho * (std::cos(angle) * u + std::sin(angle) * v);
+          const auto hit = scene.intersect({origin.cast<float>(), (-towards).cast<float>()});
+          if (!hit || hit->instance != instance) continue;  // missed it, or something else is in the way
+          walk(scene, instance, media[k], *hit, -towards, flux, rng, tally);
+        }
+        partial[b] = std::move(tally);
+      });
+      // The media are grey, so one walk serves all three channels: the light's mean.
+      const double channel = source.radiance_or_irradiance.mean();
+      for (const auto& tally : partial)
+        for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += channel * tally[i];
+      traced += settings.photons_per_light;
+    }
+    const std::vector<double> area = scene.vertex_areas(instance);
+    std::vector<float> m(sum.size()), radiance(sum.size());
+    for (std::size_t i = 0; i < sum.size(); ++i) {
+      m[i] = area[i] > 0.0 ? static_cast<float>(sum[i] / area[i]) : 0.0f;
+      radiance[i] = static_cast<float>(m[i] / kPi);
+    }
+    scene.set_vertex_values(instance, std::move(radiance));
+    exitance.push_back(std::move(m));
+  }
+  if (stats) {
+    stats->photons = traced;
+    stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  return exitance;
+}
+
+}  // namespace rice::shading
