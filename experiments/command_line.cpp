@@ -443,7 +443,7 @@ struct CommandLine::Commands {
     figure13_cmd->add_option("--spp", figure13.samples_per_pixel, "samples per pixel")
         ->check(number_in(1, 1 << 20))->capture_default_str();
     figure13_cmd->add_option("--photons", figure13.photons, "reference: photons per grain and light")
-        ->check(number_in(1000, 1e10))->capture_default_str();
+        ->check(number_in(1000, 1e9))->capture_default_str();
     figure13_cmd->add_option("--seed", figure13.seed, "random seed (the grain and the samples)")
         ->check(seed_value())->capture_default_str();
   }

@@ -28,8 +28,8 @@ void validate(const Figure13Settings& s) {
     throw std::invalid_argument("figure 13: --width and --height must be in [16, 16384]");
   if (s.samples_per_pixel < 1 || s.samples_per_pixel > 1 << 20)
     throw std::invalid_argument("figure 13: --spp must be in [1, 1048576]");
-  if (s.photons < 1000 || s.photons > 10'000'000'000LL)
-    throw std::invalid_argument("figure 13: --photons must be in [1000, 1e10]");
+  if (s.photons < 1000 || s.photons > 1'000'000'000LL)
+    throw std::invalid_argument("figure 13: --photons must be in [1000, 1e9]");
 }
 
 void figure13_command(const Figure13Settings& settings, const std::filesystem::path& folder) {
