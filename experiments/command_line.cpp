@@ -137,7 +137,7 @@ struct CommandLine::Commands {
   std::vector<double> render_eye, render_look_at;
   double render_fov = 30.0, render_aperture = 0.0, render_focus = 0.0;
   bool render_no_shadows = false, render_no_ao = false, render_no_ground = false, render_side_by_side = false;
-  std::string render_sky_image;
+  std::string render_sky_image, render_pour;
 
   CLI::App* pour_cmd = nullptr;
   PourSettings pour;
@@ -350,7 +350,10 @@ struct CommandLine::Commands {
 
   void add_render() {
     render_cmd = app.add_subcommand("render", "grain meshes rendered as cooked rice with the CDRF (PNG and EXR)");
-    render_cmd->add_option("--meshes", render_meshes, "mesh files (PLY, OBJ), or folders of them (required)");
+    render_cmd->add_option("--meshes", render_meshes, "mesh files (PLY, OBJ), or folders of them");
+    render_cmd->add_option("--pour", render_pour, "or: the output folder of a rigid rice pour");
+    render_cmd->add_option("--frame", render.frame, "the pour's frame (0: the last)")->check(number_in(0, 1e6))
+        ->capture_default_str();
     render_cmd->add_option("--out", render_out, "output folder")->capture_default_str();
     render_cmd->add_option("--absorption", render.absorption_percent, "water absorption W [%]: sigma0 and albedo")
         ->check(number_in(0, 100))->capture_default_str();
@@ -401,6 +404,7 @@ struct CommandLine::Commands {
     settings.ground = !render_no_ground;
     settings.side_by_side = render_side_by_side;
     settings.sky_image = render_sky_image;
+    settings.pour = render_pour;
     if (!render_eye.empty() || !render_look_at.empty()) {
       shading::Camera camera;
       if (render_eye.size() == 3) camera.position = {render_eye[0], render_eye[1], render_eye[2]};

@@ -219,6 +219,22 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   }
   std::vector<Vec3> initial_centre(settings.count);
   for (int g = 0; g < settings.count; ++g) initial_centre[g] = xpbd::body_centre(model, model.bodies[g]) - parking(g);
+  // What a renderer needs to place each grain's render mesh at a frame's pose (c, q):
+  // world = c + q (drop + P R p − c₀) for p in its variant's render mesh.
+  make_output_folder(folder / "variants");
+  for (int i = 0; i < settings.variants; ++i) {
+    write_file_atomically(folder / "variants" / ("variant_" + std::to_string(i) + ".ply"),
+                          [&](std::ostream& out) { grains::write_ply(out, variants[i].grain.render); });
+  }
+  CsvTable placement({"grain", "variant", "swell", "qw", "qx", "qy", "qz", "drop_x", "drop_y", "drop_z", "centre_x",
+                      "centre_y", "centre_z"});
+  for (int g = 0; g < settings.count; ++g) {
+    const Eigen::Quaterniond& R = instances[g].rotation;
+    placement.add_row({cell(g), cell(instances[g].variant), cell(instances[g].swell), cell(R.w()), cell(R.x()),
+                       cell(R.y()), cell(R.z()), cell(drops[g].x()), cell(drops[g].y()), cell(drops[g].z()),
+                       cell(initial_centre[g].x()), cell(initial_centre[g].y()), cell(initial_centre[g].z())});
+  }
+  write_file_atomically(folder / "grains.csv", placement.text());
   // Moves a parked grain to the spout, raised by `lift`, and wakes it.
   const auto release = [&](int g, double lift) {
     const Vec3 move = Vec3(0.0, 0.0, lift) - parking(g);

@@ -6,8 +6,11 @@
 // Writes per frame the grains' transforms (rigid) or simulation positions (soft), optionally
 // their deformed render meshes, `stats.csv` (per frame: wall time, awake grains, candidate
 // pairs, contacts, bonds, penetration, kinetic energy, and the time split into broad phase,
-// narrow phase, solves and sleeping), the final pile seen from the top and the side, and
-// run_info.txt.
+// narrow phase, solves and sleeping), the final pile seen from the top and the side,
+// run_info.txt, and for rendering (`rice render --pour`) the variants' render meshes
+// (variants/variant_k.ply) and grains.csv: each grain's variant, swell P, rotation R, drop
+// point and initial centre c₀, so that a frame's pose (c, q) puts render vertex p at
+// c + q (drop + P R p − c₀).
 #pragma once
 
 #include <cstdint>

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "experiments/interrupt.hpp"
+#include "experiments/numeric_csv.hpp"
 #include "experiments/output.hpp"
 #include "experiments/render_output.hpp"
 #include "grains/mesh_io.hpp"
@@ -36,6 +37,68 @@ std::vector<std::filesystem::path> mesh_files(const std::vector<std::filesystem:
     }
   }
   return files;
+}
+
+std::filesystem::path pour_frame_path(const std::filesystem::path& pour, int frame) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%04d.csv", frame);
+  return pour / "frames" / name;
+}
+
+// The pour's last frame file.
+std::filesystem::path last_pour_frame(const std::filesystem::path& pour) {
+  std::filesystem::path last;
+  for (const auto& entry : std::filesystem::directory_iterator(pour / "frames"))
+    if (entry.path().extension() == ".csv" && (last.empty() || entry.path().filename() > last.filename())) last = entry.path();
+  if (last.empty()) throw std::runtime_error("render: " + (pour / "frames").string() + " holds no frame");
+  return last;
+}
+
+// Instances of the pour's variants at a frame's poses: c + q (drop + P R p − c₀).
+void add_pour_grains(shading::RenderScene& scene, const std::filesystem::path& pour, const std::filesystem::path& frame,
+                     Eigen::AlignedBox3d& box) {
+  const NumericCsv grains_csv = read_numeric_csv(pour / "grains.csv");
+  const NumericCsv poses = read_numeric_csv(frame);
+  if (poses.columns.size() < 2 || poses.columns[1] != "x")
+    throw std::runtime_error("render: " + frame.string() + " holds soft-body vertices; only rigid pours are rendered");
+  if (poses.rows.size() != grains_csv.rows.size())
+    throw std::runtime_error("render: " + frame.string() + " has " + std::to_string(poses.rows.size()) +
+                             " grains, grains.csv " + std::to_string(grains_csv.rows.size()));
+  std::vector<int> prototype;
+  std::vector<grains::SurfaceMesh> variants;
+  for (int k = 0;; ++k) {
+    const auto path = pour / "variants" / ("variant_" + std::to_string(k) + ".ply");
+    if (!std::filesystem::exists(path)) break;
+    variants.push_back(grains::read_surface_mesh(path));
+  }
+  Progress progress("render: variants and curvature", static_cast<int>(variants.size()));
+  for (size_t k = 0; k < variants.size(); ++k) {
+    prototype.push_back(add_grain_prototype(scene, variants[k].V, variants[k].F));
+    progress.update(static_cast<int>(k + 1));
+  }
+  progress.finish();
+  const auto col = [&](const NumericCsv& csv, const std::vector<double>& row, const char* name) {
+    return row[csv.column(name)];
+  };
+  for (size_t g = 0; g < grains_csv.rows.size(); ++g) {
+    const auto& a = grains_csv.rows[g];
+    const auto& b = poses.rows[g];
+    const int variant = static_cast<int>(col(grains_csv, a, "variant"));
+    if (variant < 0 || variant >= static_cast<int>(prototype.size()))
+      throw std::runtime_error("render: " + (pour / "grains.csv").string() + ": grain " + std::to_string(g) +
+                               " names variant " + std::to_string(variant) + " of " + std::to_string(prototype.size()));
+    const Eigen::Quaterniond R(col(grains_csv, a, "qw"), col(grains_csv, a, "qx"), col(grains_csv, a, "qy"),
+                               col(grains_csv, a, "qz"));
+    const Eigen::Quaterniond q(col(poses, b, "qw"), col(poses, b, "qx"), col(poses, b, "qy"), col(poses, b, "qz"));
+    const Eigen::Vector3d drop(col(grains_csv, a, "drop_x"), col(grains_csv, a, "drop_y"), col(grains_csv, a, "drop_z"));
+    const Eigen::Vector3d c0(col(grains_csv, a, "centre_x"), col(grains_csv, a, "centre_y"), col(grains_csv, a, "centre_z"));
+    const Eigen::Vector3d c(col(poses, b, "x"), col(poses, b, "y"), col(poses, b, "z"));
+    const Eigen::Affine3d place = Eigen::Translation3d(c) * q.normalized() * Eigen::Translation3d(drop - c0) *
+                                  R.normalized() * Eigen::Scaling(col(grains_csv, a, "swell"));
+    scene.add_instance(prototype[variant], place, 0);
+    const auto& V = variants[variant].V;
+    for (Eigen::Index v = 0; v < V.rows(); v += 16) box.extend(place * V.row(v).transpose());
+  }
 }
 
 Eigen::Vector3d direction_from(double elevation_degrees, double azimuth_degrees) {
@@ -72,9 +135,21 @@ shading::Camera framing_camera(const Eigen::AlignedBox3f& bounds, double elevati
 
 void validate(const RenderCommandSettings& s) {
   const auto files = mesh_files(s.meshes);
-  if (files.empty()) throw std::invalid_argument("render: give --meshes: mesh files, or folders holding .ply or .obj files");
+  if (files.empty() == s.pour.empty())
+    throw std::invalid_argument("render: give either --meshes (mesh files, or folders holding .ply or .obj files) or "
+                                "--pour (a rice pour's output folder)");
   for (const auto& f : files)
     if (!std::filesystem::is_regular_file(f)) throw std::invalid_argument("render: " + f.string() + ": no such file");
+  if (!s.pour.empty()) {
+    for (const char* name : {"grains.csv", "variants", "frames"})
+      if (!std::filesystem::exists(s.pour / name))
+        throw std::invalid_argument("render: --pour " + s.pour.string() + " has no " + name +
+                                    " (a rigid pour's output folder is expected)");
+    if (s.frame > 0 && !std::filesystem::exists(pour_frame_path(s.pour, s.frame)))
+      throw std::invalid_argument("render: --frame " + std::to_string(s.frame) + ": no " +
+                                  pour_frame_path(s.pour, s.frame).string());
+  }
+  if (s.frame < 0) throw std::invalid_argument("render: --frame must be >= 0");
   if (!(s.absorption_percent >= 0.0 && s.absorption_percent <= 100.0))
     throw std::invalid_argument("render: --absorption must be in [0, 100] %");
   if (s.render.width < 1 || s.render.height < 1 || s.render.width > 16384 || s.render.height > 16384)
@@ -91,7 +166,11 @@ void render_command(const RenderCommandSettings& settings, const std::filesystem
   shading::RenderScene scene;
   Eigen::AlignedBox3d box;
   const auto files = mesh_files(settings.meshes);
-  {
+  std::filesystem::path frame;
+  if (!settings.pour.empty()) {
+    frame = settings.frame > 0 ? pour_frame_path(settings.pour, settings.frame) : last_pour_frame(settings.pour);
+    add_pour_grains(scene, settings.pour, frame, box);
+  } else {
     Progress progress("render: meshes and curvature", static_cast<int>(files.size()));
     double next_x = 0.0;  // side by side: the next mesh's left edge
     for (size_t i = 0; i < files.size(); ++i) {
@@ -109,13 +188,20 @@ void render_command(const RenderCommandSettings& settings, const std::filesystem
     }
     progress.finish();
   }
-  std::vector<shading::Material> materials = {rice_material(settings.absorption_percent),
-                                              {.kind = shading::MaterialKind::kDiffuse,
-                                               .albedo = shading::Color::Constant(0.35f)}};
+  std::vector<shading::Material> materials = {
+      rice_material(settings.absorption_percent),
+      {.kind = shading::MaterialKind::kDiffuse, .albedo = shading::Color::Constant(0.35f)},
+      {.kind = shading::MaterialKind::kGlazed, .albedo = shading::Color(0.12f, 0.1f, 0.09f), .roughness = 0.08}};
+  Eigen::AlignedBox3d scene_box = box;  // grains, and the bowl when there is one
+  if (!settings.pour.empty() && std::filesystem::exists(settings.pour / "chawan.obj")) {
+    const grains::SurfaceMesh bowl = grains::read_surface_mesh(settings.pour / "chawan.obj");
+    scene.add_instance(scene.add_prototype(bowl.V, bowl.F), Eigen::Affine3d::Identity(), 2);  // a dark glazed chawan
+    for (Eigen::Index v = 0; v < bowl.V.rows(); ++v) scene_box.extend(bowl.V.row(v).transpose());
+  }
   if (settings.ground) {
     // A square four times the meshes' extent, just under their lowest point.
-    const double half = 2.0 * box.diagonal().head<2>().maxCoeff() + 1e-3, z = box.min().z() - 1e-6;
-    const Eigen::Vector2d c = box.center().head<2>();
+    const double half = 2.0 * scene_box.diagonal().head<2>().maxCoeff() + 1e-3, z = scene_box.min().z() - 1e-6;
+    const Eigen::Vector2d c = scene_box.center().head<2>();
     shading::MeshVertices V(4, 3);
     V << c.x() - half, c.y() - half, z, c.x() + half, c.y() - half, z, c.x() + half, c.y() + half, z, c.x() - half,
         c.y() + half, z;
@@ -140,7 +226,7 @@ void render_command(const RenderCommandSettings& settings, const std::filesystem
     lights.environment.constant = shading::Color::Constant(static_cast<float>(settings.sky_radiance));
   }
   const double aspect = static_cast<double>(settings.render.width) / settings.render.height;
-  Eigen::AlignedBox3f grains_box(box.min().cast<float>(), box.max().cast<float>());
+  Eigen::AlignedBox3f grains_box(scene_box.min().cast<float>(), scene_box.max().cast<float>());
   const shading::Camera camera = settings.camera ? *settings.camera : framing_camera(grains_box, 35.0, -60.0, 30.0, aspect);
 
   const shading::CdrfTable cdrf(513, 513);
@@ -159,7 +245,9 @@ void render_command(const RenderCommandSettings& settings, const std::filesystem
   write_file_atomically(
       folder / "run_info.txt",
       run_info({{"command", "render"},
-                {"meshes", cell(static_cast<long>(files.size()))},
+                {"meshes", settings.pour.empty() ? cell(static_cast<long>(files.size())) : "pour " + frame.string()},
+                {"instances", cell(scene.instance_count())},
+                {"prototypes", cell(scene.prototype_count())},
                 {"absorption_percent", cell(settings.absorption_percent)},
                 {"sigma0_m", cell(materials[0].sigma0)},
                 {"width", cell(settings.render.width)},

@@ -1,6 +1,8 @@
 // `rice render`: renders grain meshes (the PLY/OBJ files of `rice grains`, or any closed
-// meshes) as cooked rice with the CDRF (paper §4.4), on an optional ground, under a sun and a
-// uniform or image sky, from a camera given on the command line or framed automatically.
+// meshes) or a frame of a rigid `rice pour` (its grains instanced from its variants, and its
+// chawan, glazed) as cooked rice with the CDRF (paper §4.4), on an optional ground, under a
+// sun and a uniform or image sky, from a camera given on the command line or framed
+// automatically.
 // Writes render.png (tone mapped), render.exr (linear) and run_info.txt (settings, ray counts,
 // rays per second, wall time).
 #pragma once
@@ -20,6 +22,8 @@ namespace rice::experiments {
 
 struct RenderCommandSettings {
   std::vector<std::filesystem::path> meshes;  ///< files, or folders whose .ply/.obj files are read
+  std::filesystem::path pour;                 ///< or: the output folder of a rigid `rice pour`
+  int frame = 0;                              ///< of the pour; 0: its last
   double absorption_percent = 20.0;           ///< water absorption W: σ0 and albedo of the CDRF
   shading::RenderSettings render;
   std::optional<shading::Camera> camera;  ///< none: framed on the meshes' bounds
