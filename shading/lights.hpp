@@ -32,24 +32,39 @@ struct Sun {
   float angular_radius = 0.00465f;                 ///< [rad], the real sun's
   Color irradiance = Color::Constant(3.0f);        ///< E at normal incidence
 
-  LightSample sample(double a, double b) const {
+  /// The sun's frame and weight, computed once per image.
+  struct Sampler {
+    Eigen::Vector3d w, t, s;
+    double one_minus_cos_max = 0.0;
+    Color weight = Color::Zero();
+
+    LightSample sample(double a, double b) const {
+      const double one_minus_cos = a * one_minus_cos_max;
+      const double cos_t = 1.0 - one_minus_cos;
+      const double sin_t = std::sqrt(std::max(0.0, one_minus_cos * (2.0 - one_minus_cos)));
+      const double phi = 2.0 * std::numbers::pi * b;
+      return {(cos_t * w + sin_t * (std::cos(phi) * t + std::sin(phi) * s)).normalized().cast<float>(),
+              std::numeric_limits<float>::infinity(), weight};
+    }
+  };
+
+  Sampler sampler() const {
     // In double with 1 − cos α = 2 sin²(α/2): in float, 1 − cos α of the real sun (1.1e-5)
     // keeps two digits and the irradiance came out 0.3% low.
-    const Eigen::Vector3d w = direction.cast<double>().normalized();
+    Sampler p;
+    p.w = direction.cast<double>().normalized();
+    p.t = (std::abs(p.w.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY()).cross(p.w).normalized();
+    p.s = p.w.cross(p.t);
     const double half = std::sin(0.5 * angular_radius);
-    const double one_minus_cos_max = 2.0 * half * half;
-    const double one_minus_cos = a * one_minus_cos_max;
-    const double cos_t = 1.0 - one_minus_cos;
-    const double sin_t = std::sqrt(std::max(0.0, one_minus_cos * (2.0 - one_minus_cos)));
-    const double phi = 2.0 * std::numbers::pi * b;
-    const Eigen::Vector3d t = (std::abs(w.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY()).cross(w).normalized();
-    const Eigen::Vector3d s = w.cross(t);
-    const double solid_angle = 2.0 * std::numbers::pi * one_minus_cos_max;
+    p.one_minus_cos_max = 2.0 * half * half;
+    const double solid_angle = 2.0 * std::numbers::pi * p.one_minus_cos_max;
     const double sin_a = std::sin(angular_radius);
-    const Color weight = irradiance * static_cast<float>(solid_angle / (std::numbers::pi * sin_a * sin_a));
-    return {(cos_t * w + sin_t * (std::cos(phi) * t + std::sin(phi) * s)).normalized().cast<float>(),
-            std::numeric_limits<float>::infinity(), weight};
+    p.weight = sin_a > 0.0 ? Color(irradiance * static_cast<float>(solid_angle / (std::numbers::pi * sin_a * sin_a)))
+                           : irradiance;
+    return p;
   }
+
+  LightSample sample(double a, double b) const { return sampler().sample(a, b); }
 };
 
 struct QuadLight {

@@ -27,8 +27,9 @@ struct Counters {
 // Radiance towards −ray.direction from the first surface along the camera ray. Sample pairs:
 // 0 pixel, 1 lens, then one per sun, one per quad light, one for the environment, one for
 // the specular lobe.
-Color shade(const RenderScene& scene, const std::vector<Material>& materials, const Lights& lights, const CdrfTable& cdrf,
-            const RenderSettings& settings, const PixelSampler& sampler, int index, const Ray& ray, Counters& counters) {
+Color shade(const RenderScene& scene, const std::vector<Material>& materials, const Lights& lights,
+            const std::vector<Sun::Sampler>& suns, const CdrfTable& cdrf, const RenderSettings& settings,
+            const PixelSampler& sampler, int index, const Ray& ray, Counters& counters) {
   const std::optional<ShadingPoint> hit = scene.intersect(ray);
   ++counters.camera;
   if (!hit) return lights.environment.radiance(ray.direction);
@@ -50,33 +51,53 @@ Color shade(const RenderScene& scene, const std::vector<Material>& materials, co
 
   Color radiance = Color::Zero();
   if (material.kind == MaterialKind::kSubsurfaceReference) radiance += static_cast<float>(hit->baked);
+  // Adds a light sample's unoccluded contribution c after its visibility test. Shadow-ray
+  // roulette: a contribution small against what this sample has gathered so far, R, is
+  // tested with probability p = min(1, 4c / (R + c)) and weighted 1/p, which keeps the
+  // estimate unbiased and spares most rays of the dim sky and Fresnel-weak specular samples
+  // on sunlit grains. Its random numbers come from their own sample dimensions.
+  int roulette_pair = 64;
+  auto add = [&](const Color& contribution, const Eigen::Vector3f& wi, float distance, bool test) {
+    if (!(contribution > 0.0f).any()) return;
+    if (!test) {
+      radiance += contribution;
+      return;
+    }
+    const double c = contribution.mean(), gathered = radiance.mean();
+    const double p = std::min(1.0, 4.0 * c / (gathered + c));
+    double u = 0.0, unused = 0.0;
+    sampler.pair(index, roulette_pair++, u, unused);
+    if (u >= p) return;
+    if (visible(wi, distance, true)) radiance += contribution / static_cast<float>(p);
+  };
   int pair = 2;
   double a = 0.0, b = 0.0;
-  for (const Sun& sun : lights.suns) {
+  for (const Sun::Sampler& sun : suns) {
     sampler.pair(index, pair++, a, b);
     const LightSample s = sun.sample(a, b);
-    const Color f = surface_response(material, cdrf, n, wo, s.direction, hit->curvature);
-    if ((f > 0.0f).any() && visible(s.direction, s.distance, settings.shadows)) radiance += f * s.weight;
+    add(surface_response(material, cdrf, n, wo, s.direction, hit->curvature) * s.weight, s.direction, s.distance,
+        settings.shadows);
   }
   for (const QuadLight& quad : lights.quads) {
     sampler.pair(index, pair++, a, b);
     const LightSample s = quad.sample(hit->position, a, b);
     if ((s.weight <= 0.0f).all()) continue;
-    const Color f = surface_response(material, cdrf, n, wo, s.direction, hit->curvature);
-    if ((f > 0.0f).any() && visible(s.direction, s.distance, settings.shadows)) radiance += f * s.weight;
+    add(surface_response(material, cdrf, n, wo, s.direction, hit->curvature) * s.weight, s.direction, s.distance,
+        settings.shadows);
   }
   if (!lights.environment.empty()) {
     // Diffuse part over the whole sphere; the specular part from its own lobe below.
     sampler.pair(index, pair++, a, b);
     const LightSample s = lights.environment.sample(a, b);
-    const Color f = diffuse_term(material, cdrf, n, wo, s.direction, hit->curvature);
-    if ((f > 0.0f).any() && visible(s.direction, s.distance, settings.ambient_occlusion)) radiance += f * s.weight;
+    add(diffuse_term(material, cdrf, n, wo, s.direction, hit->curvature) * s.weight, s.direction, s.distance,
+        settings.ambient_occlusion);
     if (has_specular(material)) {
       sampler.pair(index, pair++, a, b);
       Eigen::Vector3f wi;
       const double weight = sample_specular(n, wo, material.refractive_index, material.roughness, a, b, wi);
-      if (weight > 0.0 && visible(wi, std::numeric_limits<float>::infinity(), settings.ambient_occlusion))
-        radiance += static_cast<float>(weight) * lights.environment.radiance(wi);
+      if (weight > 0.0)
+        add(static_cast<float>(weight) * lights.environment.radiance(wi), wi, std::numeric_limits<float>::infinity(),
+            settings.ambient_occlusion);
     }
   }
   return radiance;
@@ -103,7 +124,9 @@ Image render(const RenderScene& scene, const std::vector<Material>& materials, c
   const int tiles = tile_count(settings);
   std::atomic<int> done = 0;
   std::atomic<long long> camera_rays = 0, shadow_rays = 0;
-  const double aspect = static_cast<double>(settings.width) / settings.height;
+  const Camera::Frame frame = camera.frame(static_cast<double>(settings.width) / settings.height);
+  std::vector<Sun::Sampler> suns;
+  for (const Sun& sun : lights.suns) suns.push_back(sun.sampler());
   tbb::parallel_for(0, tiles, [&](int tile) {
     if (cancelled && cancelled()) return;
     Counters counters;
@@ -116,8 +139,8 @@ Image render(const RenderScene& scene, const std::vector<Material>& materials, c
           double px = 0.0, py = 0.0, la = 0.0, lb = 0.0;
           sampler.pair(i, 0, px, py);
           sampler.pair(i, 1, la, lb);
-          const CameraRay cr = camera.ray((x + px) / settings.width, (y + py) / settings.height, la, lb, aspect);
-          sum += shade(scene, materials, lights, cdrf, settings, sampler, i, {cr.origin, cr.direction}, counters);
+          const CameraRay cr = frame.ray((x + px) / settings.width, (y + py) / settings.height, la, lb);
+          sum += shade(scene, materials, lights, suns, cdrf, settings, sampler, i, {cr.origin, cr.direction}, counters);
         }
         image.at(x, y) = sum / static_cast<float>(settings.samples_per_pixel);
       }
