@@ -24,6 +24,7 @@
 #include "experiments/pour_scene.hpp"
 #include "experiments/pour_substep_study.hpp"
 #include "experiments/render_command.hpp"
+#include "experiments/render_study.hpp"
 #include "experiments/water_absorption_figure.hpp"
 #include "experiments/xpbd_stiffness_study.hpp"
 #include "grains/cultivar.hpp"
@@ -95,6 +96,9 @@ struct CommandLine::Commands {
   int threads = 0;
 
   CLI::App* stiffness_cmd = nullptr;
+  CLI::App* render_study_cmd = nullptr;
+  RenderStudySettings render_study;
+  std::string render_study_out = "out/render-study";
   CLI::App* cdrf_cmd = nullptr;
   CdrfStudySettings cdrf;
   std::string cdrf_out = "out/cdrf";
@@ -229,6 +233,22 @@ struct CommandLine::Commands {
     cdrf_cmd->add_option("--bins", cdrf.bins, "theta bins over [0, pi]")->check(number_in(4, 1000))
         ->capture_default_str();
     cdrf_cmd->add_option("--seed", cdrf.seed, "random seed")->check(seed_value())->capture_default_str();
+
+    render_study_cmd = study->add_subcommand("render", "image error against time: samplers, and the CDRF against the random walk");
+    render_study_cmd->add_option("--out", render_study_out, "output folder")->capture_default_str();
+    render_study_cmd->add_option("--width", render_study.width, "pixels")->check(number_in(8, 4096))->capture_default_str();
+    render_study_cmd->add_option("--height", render_study.height, "pixels")->check(number_in(8, 4096))->capture_default_str();
+    render_study_cmd->add_option("--grains", render_study.grains, "grains on the plate")->check(number_in(1, 10000))
+        ->capture_default_str();
+    render_study_cmd->add_option("--samples", render_study.samples, "samples per pixel to sweep")
+        ->check(number_in(1, 65536))->capture_default_str();
+    render_study_cmd->add_option("--reference-spp", render_study.reference_spp, "samples of the reference image")
+        ->check(number_in(1, 1 << 20))->capture_default_str();
+    render_study_cmd->add_option("--photons", render_study.photons, "random-walk photons per grain and light to sweep")
+        ->check(number_in(1000, 1e9))->capture_default_str();
+    render_study_cmd->add_option("--bake-spp", render_study.bake_render_spp, "samples of the random-walk renders")
+        ->check(number_in(1, 65536))->capture_default_str();
+    render_study_cmd->add_option("--seed", render_study.seed, "random seed")->check(seed_value())->capture_default_str();
 
     pour_substeps_cmd = study->add_subcommand("pour-substeps", "the pour's overlaps against wall time over substeps");
     pour_substeps_cmd->add_option("--out", pour_substeps_out, "output folder")->capture_default_str();
@@ -483,6 +503,7 @@ void CommandLine::validate() const {
   const Commands& c = *commands_;
   if (*c.stiffness_cmd) experiments::validate(c.stiffness);
   if (*c.cdrf_cmd) experiments::validate(c.cdrf);
+  if (*c.render_study_cmd) experiments::validate(c.render_study);
   if (*c.oscillator_cmd) experiments::validate(c.oscillator);
   if (*c.convergence_cmd) experiments::validate(c.convergence_settings());
   if (*c.grains_cmd) experiments::validate(c.grain_library_settings());
@@ -497,6 +518,7 @@ void CommandLine::run() const {
   const Commands& c = *commands_;
   if (*c.stiffness_cmd) stiffness_study_command(c.stiffness, c.stiffness_out);
   if (*c.cdrf_cmd) cdrf_study_command(c.cdrf, c.cdrf_out);
+  if (*c.render_study_cmd) render_study_command(c.render_study, c.render_study_out);
   if (*c.pour_substeps_cmd) pour_substep_study_command(c.pour_substeps_settings(), c.pour_substeps_out);
   if (*c.oscillator_cmd) oscillator_study_command(c.oscillator, c.oscillator_out);
   if (*c.convergence_cmd) convergence_study_command(c.convergence_settings(), c.convergence_out);
