@@ -15,6 +15,7 @@
 // Written by hand: the samplers of pbrt or Mitsuba are not packaged for Debian.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -34,12 +35,19 @@ inline std::uint64_t mix(std::uint64_t z) {
 
 inline double to_unit(std::uint32_t bits) { return bits * 0x1p-32; }
 
+/// The bits of x in reverse order, a byte at a time from a table.
 inline std::uint32_t reverse_bits(std::uint32_t x) {
-  x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
-  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
-  x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
-  x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
-  return (x >> 16) | (x << 16);
+  static constexpr auto table = [] {
+    std::array<std::uint8_t, 256> t{};
+    for (int b = 0; b < 256; ++b) {
+      int r = 0;
+      for (int k = 0; k < 8; ++k) r |= ((b >> k) & 1) << (7 - k);
+      t[b] = static_cast<std::uint8_t>(r);
+    }
+    return t;
+  }();
+  return (std::uint32_t{table[x & 0xff]} << 24) | (std::uint32_t{table[(x >> 8) & 0xff]} << 16) |
+         (std::uint32_t{table[(x >> 16) & 0xff]} << 8) | table[x >> 24];
 }
 
 /// Laine–Karras hash: a permutation of 32-bit values in which each bit depends only on the
@@ -91,12 +99,25 @@ inline std::uint32_t permute(std::uint32_t i, std::uint32_t n, std::uint32_t key
 }
 
 /// Second dimension of the Sobol sequence (primitive polynomial x + 1): generator columns
-/// v_1 = 2^31, v_k = v_{k−1} ⊕ (v_{k−1} >> 1).
+/// v_1 = 2^31, v_k = v_{k−1} ⊕ (v_{k−1} >> 1), XORed over the index's set bits, a byte of the
+/// index at a time from tables (scrambled indices use all 32 bits).
 inline std::uint32_t sobol_second(std::uint32_t index) {
-  std::uint32_t result = 0;
-  for (std::uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1)
-    if (index & 1u) result ^= v;
-  return result;
+  static constexpr auto tables = [] {
+    std::array<std::array<std::uint32_t, 256>, 4> t{};
+    std::array<std::uint32_t, 32> v{};
+    v[0] = 1u << 31;
+    for (int k = 1; k < 32; ++k) v[k] = v[k - 1] ^ (v[k - 1] >> 1);
+    for (int byte = 0; byte < 4; ++byte)
+      for (int b = 0; b < 256; ++b) {
+        std::uint32_t x = 0;
+        for (int j = 0; j < 8; ++j)
+          if ((b >> j) & 1) x ^= v[8 * byte + j];
+        t[byte][b] = x;
+      }
+    return t;
+  }();
+  return tables[0][index & 0xff] ^ tables[1][(index >> 8) & 0xff] ^ tables[2][(index >> 16) & 0xff] ^
+         tables[3][index >> 24];
 }
 
 }  // namespace detail
@@ -138,7 +159,9 @@ class PixelSampler {
       case SamplerKind::kSobol: {
         const std::uint64_t seeds = detail::mix(key);
         const std::uint32_t i = detail::owen_scramble(static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(key));
-        a = detail::to_unit(detail::owen_scramble(detail::reverse_bits(i), static_cast<std::uint32_t>(seeds)));
+        // Dimension 0 of the Sobol sequence is reverse_bits(i), and owen_scramble(reverse_bits(i))
+        // = reverse_bits(laine_karras(i)).
+        a = detail::to_unit(detail::reverse_bits(detail::laine_karras(i, static_cast<std::uint32_t>(seeds))));
         b = detail::to_unit(detail::owen_scramble(detail::sobol_second(i), static_cast<std::uint32_t>(seeds >> 32)));
         return;
       }
