@@ -9,8 +9,10 @@
 // WaterContentModel::scattering_sigma0 and cdrf_albedo hold.
 //
 // Writes cdrf_fit.csv (a row per water content), cdrf_profiles.csv (a row per θ bin and
-// radius: reference ± standard error, fitted CDRF), cdrf_profiles.png, sigma0_law.png and
-// run_info.txt (the law's s0 and s1, RMS errors, times).
+// radius: reference ± standard error, fitted CDRF), grain_profiles.csv (per water content,
+// cos θ and κ bin: reference and CDRF on the grain), cdrf_profiles.png, grain_profiles.png,
+// sigma0_law.png and
+// run_info.txt (the laws' constants, RMS errors, times).
 #pragma once
 
 #include <cstdint>
@@ -19,6 +21,7 @@
 #include <vector>
 
 #include "grains/water_content.hpp"
+#include "shading/curvature.hpp"
 #include "shading/random_walk.hpp"
 #include "shading/sigma0_fit.hpp"
 
@@ -29,6 +32,7 @@ struct CdrfStudySettings {
   std::vector<double> soak_minutes = {15, 30, 60, 120, 240};     ///< five absorptions
   std::vector<double> radii_mm = {0.5, 1.0, 2.0, 4.0};           ///< κ from 2.5 to 0.25 /mm
   long long photons = 200'000;                                   ///< per sphere
+  long long grain_photons = 1'000'000;                           ///< on the grain mesh; 0: none
   int bins = 36;
   std::uint64_t seed = 1;
 };
@@ -49,6 +53,17 @@ struct WaterContentFit {
 /// them; `sphere_done` is called after each sphere.
 WaterContentFit fit_water_content(double absorption_percent, const CdrfStudySettings& settings,
                                   const std::function<void()>& sphere_done = {});
+
+/// The CDRF with a sphere-fitted σ0 and albedo on a grain mesh, against the random walk
+/// baked on that mesh under a sun along +z: vertices binned by (cos θ, κ), each bin's
+/// area-weighted mean exitance a sample.
+struct GrainCheck {
+  std::vector<shading::ExitanceSample> samples;  ///< reference bins
+  std::vector<double> cdrf;                      ///< A f_r(θ, σ0 max(κ, 0)) at each bin
+  double rms = 0.0, mean_exitance = 0.0, bake_seconds = 0.0;
+};
+GrainCheck check_on_grain(const WaterContentFit& fit, const shading::MeshVertices& V, const shading::MeshTriangles& F,
+                          long long photons, std::uint64_t seed);
 
 /// Throws std::invalid_argument naming the option that is out of range.
 void validate(const CdrfStudySettings& settings);

@@ -138,7 +138,7 @@ struct CommandLine::Commands {
   RenderCommandSettings render;
   std::string render_out = "out/render", render_sampler = "sobol";
   std::vector<std::string> render_meshes;
-  std::vector<double> render_eye, render_look_at;
+  std::vector<double> render_eye, render_look_at, render_area;
   double render_fov = 30.0, render_aperture = 0.0, render_focus = 0.0;
   bool render_no_shadows = false, render_no_ao = false, render_no_ground = false, render_side_by_side = false;
   std::string render_sky_image, render_pour;
@@ -230,6 +230,8 @@ struct CommandLine::Commands {
         ->capture_default_str();
     cdrf_cmd->add_option("--photons", cdrf.photons, "photons per sphere")->check(number_in(1000, 1e9))
         ->capture_default_str();
+    cdrf_cmd->add_option("--grain-photons", cdrf.grain_photons, "photons on the grain mesh check (0: none)")
+        ->check(number_in(0, 1e9))->capture_default_str();
     cdrf_cmd->add_option("--bins", cdrf.bins, "theta bins over [0, pi]")->check(number_in(4, 1000))
         ->capture_default_str();
     cdrf_cmd->add_option("--seed", cdrf.seed, "random seed")->check(seed_value())->capture_default_str();
@@ -406,6 +408,10 @@ struct CommandLine::Commands {
         ->check(number_in(0, 1e6))->capture_default_str();
     render_cmd->add_option("--sun-diameter", render.sun_diameter_degrees, "angular diameter [degrees]")
         ->check(number_in(0, 90, Ends::kOpenLow))->capture_default_str();
+    render_cmd->add_option("--area-light", render_area,
+                           "a parallelogram light: corner x y z, edge u x y z, edge v x y z, radiance; it shines "
+                           "towards v x u; repeatable")
+        ->expected(10)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)->check(number_in(-1e6, 1e6));
     render_cmd->add_option("--sky", render.sky_radiance, "uniform sky radiance")->check(number_in(0, 1e6))
         ->capture_default_str();
     render_cmd->add_option("--sky-image", render_sky_image, "latitude-longitude OpenEXR sky, z up");
@@ -425,6 +431,13 @@ struct CommandLine::Commands {
     settings.side_by_side = render_side_by_side;
     settings.sky_image = render_sky_image;
     settings.pour = render_pour;
+    for (size_t k = 0; k + 10 <= render_area.size(); k += 10) {
+      const auto& a = render_area;
+      settings.area_lights.push_back({.corner = Eigen::Vector3f(a[k], a[k + 1], a[k + 2]),
+                                      .edge_u = Eigen::Vector3f(a[k + 3], a[k + 4], a[k + 5]),
+                                      .edge_v = Eigen::Vector3f(a[k + 6], a[k + 7], a[k + 8]),
+                                      .radiance = shading::Color::Constant(static_cast<float>(a[k + 9]))});
+    }
     if (!render_eye.empty() || !render_look_at.empty()) {
       shading::Camera camera;
       if (render_eye.size() == 3) camera.position = {render_eye[0], render_eye[1], render_eye[2]};

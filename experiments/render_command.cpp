@@ -156,6 +156,9 @@ void validate(const RenderCommandSettings& s) {
     throw std::invalid_argument("render: --width and --height must be in [1, 16384]");
   if (s.render.samples_per_pixel < 1 || s.render.samples_per_pixel > 1 << 20)
     throw std::invalid_argument("render: --spp must be in [1, 1048576]");
+  for (const auto& quad : s.area_lights)
+    if (!(quad.edge_u.cross(quad.edge_v).norm() > 0.0f) || !(quad.radiance >= 0.0f).all())
+      throw std::invalid_argument("render: an --area-light needs two edges that span an area and a radiance >= 0");
   if (!s.sky_image.empty() && !std::filesystem::is_regular_file(s.sky_image))
     throw std::invalid_argument("render: --sky-image " + s.sky_image.string() + ": no such file");
 }
@@ -217,6 +220,7 @@ void render_command(const RenderCommandSettings& settings, const std::filesystem
                            .angular_radius = static_cast<float>(0.5 * settings.sun_diameter_degrees * kDegree),
                            .irradiance = shading::Color::Constant(static_cast<float>(settings.sun_irradiance))});
   }
+  lights.quads = settings.area_lights;
   if (!settings.sky_image.empty()) {
     shading::Image sky = read_exr(settings.sky_image);
     lights.environment.width = sky.width;

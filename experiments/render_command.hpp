@@ -30,6 +30,7 @@ struct RenderCommandSettings {
   double sun_elevation_degrees = 50.0, sun_azimuth_degrees = -30.0;
   double sun_irradiance = 3.0;  ///< [W/m²-like units]; 0: no sun
   double sun_diameter_degrees = 0.53;
+  std::vector<shading::QuadLight> area_lights;
   double sky_radiance = 0.3;    ///< uniform sky; ignored with sky_image
   std::filesystem::path sky_image;  ///< latitude–longitude OpenEXR, z up
   bool ground = true;           ///< a grey plane under the meshes

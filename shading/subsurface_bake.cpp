@@ -90,7 +90,9 @@ std::vector<std::vector<float>> bake_subsurface(RenderScene& scene, const std::v
   long long traced = 0;
   for (std::size_t k = 0; k < instances.size(); ++k) {
     const int instance = instances[k];
-    const auto [centre, radius] = scene.bounding_sphere(instance);
+    const auto sphere = scene.bounding_sphere(instance);  // no structured binding: lambdas capture these
+    const Eigen::Vector3f centre = sphere.first;
+    const float radius = sphere.second;
     // Flux per photon over the disc of area π R² (per colour channel, grey media here):
     // sun E π R² / N; sky L π R² 4π / N (directions uniform over the sphere).
     std::vector<double> sum(static_cast<std::size_t>(scene.vertex_count(instance)), 0.0);
