@@ -171,7 +171,7 @@ double WaterContentModel::scattering_sigma0(double absorption_percent) {
 }
 
 double WaterContentModel::cdrf_albedo(double absorption_percent) {
-  constexpr double a0 = 0.7883, a1 = -0.00243;  // `rice study cdrf`, as for σ0
+  constexpr double a0 = 0.7887, a1 = -0.00244;  // `rice study cdrf`, as for σ0
   return a0 + a1 * absorption_percent;
 }
 

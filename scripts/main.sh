@@ -16,4 +16,8 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 ./build/experiments/rice pour --container plate --count 400 --frames 180 --pour-seconds 3.5 --spout-height 0.05 --no-cohesion --out out/heap-dry
 ./build/experiments/rice study pour-substeps --out out/pour-substeps
 ./build/experiments/rice study cdrf --out out/cdrf
+./build/experiments/rice figure 13 --out out/figure13
+./build/experiments/rice study render --out out/render-study
+./build/experiments/rice render --pour out/pour --width 1280 --height 720 --spp 64 \
+  --eye 0 -0.12 0.16 --look-at 0 0 0.03 --fov 35 --out out/render-pour
 echo "main: results are in out/"
