@@ -49,11 +49,7 @@ Layer& layer() {
       l->scene.add_instance(prototypes[inst.variant],
                             Eigen::Translation3d(at) * inst.rotation * Eigen::Scaling(inst.swell), 0);
     }
-    shading::MeshVertices V(4, 3);
-    V << -0.1, -0.1, 0, 0.1, -0.1, 0, 0.1, 0.1, 0, -0.1, 0.1, 0;
-    shading::MeshTriangles F(2, 3);
-    F << 0, 1, 2, 0, 2, 3;
-    l->scene.add_instance(l->scene.add_prototype(V, F), Eigen::Affine3d::Identity(), 1);
+    experiments::add_ground(l->scene, -0.1, -0.1, 0.1, 0.1, 0.0, 1);
     l->scene.commit();
 
     shading::Camera camera;

@@ -57,14 +57,7 @@ void figure13_command(const Figure13Settings& settings, const std::filesystem::p
     scene.add_instance(prototype, place, i);
   }
   materials.push_back({.kind = shading::MaterialKind::kDiffuse, .albedo = shading::Color::Constant(0.05f)});
-  {
-    const double half = n * pitch;
-    shading::MeshVertices V(4, 3);
-    V << -half, -half, 0, 2 * half, -half, 0, 2 * half, half, 0, -half, half, 0;
-    shading::MeshTriangles F(2, 3);
-    F << 0, 1, 2, 0, 2, 3;
-    scene.add_instance(scene.add_prototype(V, F), Eigen::Affine3d::Identity(), n);  // dark cloth
-  }
+  add_ground(scene, -n * pitch, -n * pitch, 2 * n * pitch, n * pitch, 0.0, n);  // a dark cloth
   scene.commit();
 
   // The sun high behind the row, a dim sky; the camera looks at the row from the front, so

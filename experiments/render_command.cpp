@@ -120,6 +120,14 @@ int add_grain_prototype(shading::RenderScene& scene, const shading::MeshVertices
   return scene.add_prototype(V, F, shading::vertex_mean_curvature(V, F));
 }
 
+void add_ground(shading::RenderScene& scene, double x0, double y0, double x1, double y1, double z, int material) {
+  shading::MeshVertices V(4, 3);
+  V << x0, y0, z, x1, y0, z, x1, y1, z, x0, y1, z;
+  shading::MeshTriangles F(2, 3);
+  F << 0, 1, 2, 0, 2, 3;
+  scene.add_instance(scene.add_prototype(V, F), Eigen::Affine3d::Identity(), material);
+}
+
 shading::Camera framing_camera(const Eigen::AlignedBox3f& bounds, double elevation_degrees, double azimuth_degrees,
                                double vertical_fov_degrees, double aspect) {
   const Eigen::Vector3d centre = bounds.center().cast<double>();
@@ -205,12 +213,7 @@ void render_command(const RenderCommandSettings& settings, const std::filesystem
     // A square four times the meshes' extent, just under their lowest point.
     const double half = 2.0 * scene_box.diagonal().head<2>().maxCoeff() + 1e-3, z = scene_box.min().z() - 1e-6;
     const Eigen::Vector2d c = scene_box.center().head<2>();
-    shading::MeshVertices V(4, 3);
-    V << c.x() - half, c.y() - half, z, c.x() + half, c.y() - half, z, c.x() + half, c.y() + half, z, c.x() - half,
-        c.y() + half, z;
-    shading::MeshTriangles F(2, 3);
-    F << 0, 1, 2, 0, 2, 3;
-    scene.add_instance(scene.add_prototype(V, F), Eigen::Affine3d::Identity(), 1);
+    add_ground(scene, c.x() - half, c.y() - half, c.x() + half, c.y() + half, z, 1);
   }
   scene.commit();
 

@@ -50,6 +50,10 @@ shading::Material rice_material(double absorption_percent);
 /// Adds `V, F` as a prototype with its jet-fitted vertex curvature; returns its index.
 int add_grain_prototype(shading::RenderScene& scene, const shading::MeshVertices& V, const shading::MeshTriangles& F);
 
+/// Adds the rectangle [x0, x1] × [y0, y1] at height z, facing +z (a ground, a plate, a
+/// cloth), as its own prototype and instance with `material`.
+void add_ground(shading::RenderScene& scene, double x0, double y0, double x1, double y1, double z, int material);
+
 /// A camera that frames `bounds` from the given elevation and azimuth [degrees].
 shading::Camera framing_camera(const Eigen::AlignedBox3f& bounds, double elevation_degrees, double azimuth_degrees,
                                double vertical_fov_degrees, double aspect);

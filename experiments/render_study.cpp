@@ -53,11 +53,7 @@ void build_plate(Plate& plate, const RenderStudySettings& settings) {
                                   Eigen::AngleAxisd(0.4 * (unit(rng) - 0.5), Eigen::Vector3d::UnitZ());
     plate.grain_instances.push_back(plate.scene.add_instance(prototypes[g % prototypes.size()], place, 0));
   }
-  shading::MeshVertices V(4, 3);
-  V << -0.1, -0.1, 0, 0.1, -0.1, 0, 0.1, 0.1, 0, -0.1, 0.1, 0;
-  shading::MeshTriangles F(2, 3);
-  F << 0, 1, 2, 0, 2, 3;
-  plate.scene.add_instance(plate.scene.add_prototype(V, F), Eigen::Affine3d::Identity(), 1);
+  add_ground(plate.scene, -0.1, -0.1, 0.1, 0.1, 0.0, 1);
   plate.scene.commit();
   plate.lights.suns.push_back({.direction = Eigen::Vector3f(0.3f, 0.5f, 0.8f), .irradiance = shading::Color::Constant(3.0f)});
   plate.lights.environment.constant = shading::Color::Constant(0.3f);

@@ -29,8 +29,8 @@ if(different)
 endif()
 run(figure 13 --width 120 --height 40 --spp 2 --photons 2000 --out "${OUT}/figure13")
 expect_files("${OUT}/figure13" figure13_render.png figure13_reference.exr figure13.csv run_info.txt)
-run(study cdrf --photons 2000 --radii-mm 1 2 --soak-minutes 15 120 --out "${OUT}/cdrf")
-expect_files("${OUT}/cdrf" cdrf_fit.csv cdrf_profiles.csv run_info.txt)
+run(study cdrf --photons 2000 --grain-photons 2000 --radii-mm 1 2 --soak-minutes 15 120 --out "${OUT}/cdrf")
+expect_files("${OUT}/cdrf" cdrf_fit.csv cdrf_profiles.csv grain_profiles.csv run_info.txt)
 
 execute_process(COMMAND "${RICE}" render --meshes "${OUT}/no_such_mesh.ply" --out "${OUT}/bad"
                 RESULT_VARIABLE result OUTPUT_QUIET ERROR_QUIET)
