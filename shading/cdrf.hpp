@@ -42,14 +42,9 @@ class CdrfTable {
   /// Bilinear lookup; cos θ is clamped to [−1, 1], σ to [0, σ_max].
   double operator()(double cos_theta, double sigma) const;
 
-  int cos_theta_nodes() const { return nc_; }
-  int sigma_nodes() const { return ns_; }
-  /// Node values, σ-major: value(i, j) at cos θ_i = −1 + 2i/(nc−1), σ_j = σ_max j/(ns−1).
-  double value(int i, int j) const { return values_[static_cast<std::size_t>(j) * nc_ + i]; }
-
  private:
   int nc_, ns_;
-  std::vector<double> values_;
+  std::vector<double> values_;  // σ-major: node (i, j) at cos θ_i = −1 + 2i/(nc−1), σ_j = σ_max j/(ns−1)
 };
 
 }  // namespace rice::shading

@@ -130,13 +130,10 @@ void RenderScene::commit() {
   check(embree_->device, "commit");
   RTCBounds b;
   rtcGetSceneBounds(embree_->top, &b);
-  bounds_ = Eigen::AlignedBox3f(Eigen::Vector3f(b.lower_x, b.lower_y, b.lower_z),
-                                Eigen::Vector3f(b.upper_x, b.upper_y, b.upper_z));
-  offset_ = instances_.empty() ? 1e-7f : std::max(1e-9f, 1e-6f * bounds_.diagonal().norm());
+  const float diagonal = Eigen::Vector3f(b.upper_x - b.lower_x, b.upper_y - b.lower_y, b.upper_z - b.lower_z).norm();
+  offset_ = instances_.empty() ? 1e-7f : std::max(1e-9f, 1e-6f * diagonal);
   committed_ = true;
 }
-
-Eigen::AlignedBox3f RenderScene::bounds() const { return bounds_; }
 
 void RenderScene::set_vertex_values(int instance, std::vector<float> values) {
   Instance& i = instances_.at(instance);

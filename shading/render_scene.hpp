@@ -71,8 +71,6 @@ class RenderScene {
   /// World-space bounding sphere of one instance: centre and radius.
   std::pair<Eigen::Vector3f, float> bounding_sphere(int instance) const;
 
-  /// World-space box of all instances (after commit).
-  Eigen::AlignedBox3f bounds() const;
   /// Offset along the normal for rays leaving a surface: 1e-6 of the scene's diagonal.
   float ray_offset() const { return offset_; }
 
@@ -94,7 +92,6 @@ class RenderScene {
   std::unique_ptr<Embree> embree_;
   std::vector<std::unique_ptr<Prototype>> prototypes_;
   std::vector<Instance> instances_;
-  Eigen::AlignedBox3f bounds_;
   float offset_ = 1e-7f;
   bool committed_ = false;
 };
