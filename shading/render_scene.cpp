@@ -204,14 +204,38 @@ std::optional<ShadingPoint> RenderScene::intersect(const Ray& ray) const {
   hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   hit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(embree_->top, &context, &hit);
-  if (hit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  return shading_point(ray, hit.ray.tfar, hit.hit.instID[0], hit.hit.primID, hit.hit.u, hit.hit.v);
+}
 
-  const Instance& instance = instances_[hit.hit.instID[0]];
+void RenderScene::intersect_coherent(const std::vector<Ray>& rays, std::vector<std::optional<ShadingPoint>>& hits) const {
+  if (!committed_) throw std::logic_error("RenderScene: intersect before commit");
+  thread_local std::vector<RTCRayHit> batch;
+  batch.resize(rays.size());
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    batch[i].ray = embree_ray(rays[i]);
+    batch[i].hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    batch[i].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  }
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  rtcIntersect1M(embree_->top, &context, batch.data(), static_cast<unsigned>(batch.size()), sizeof(RTCRayHit));
+  hits.resize(rays.size());
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const RTCRayHit& h = batch[i];
+    hits[i] = shading_point(rays[i], h.ray.tfar, h.hit.instID[0], h.hit.primID, h.hit.u, h.hit.v);
+  }
+}
+
+std::optional<ShadingPoint> RenderScene::shading_point(const Ray& ray, float t, unsigned instance_id, unsigned primitive,
+                                                       float u, float v) const {
+  if (instance_id == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  const Instance& instance = instances_[instance_id];
   const Prototype& prototype = *prototypes_[instance.prototype];
-  const Eigen::Vector3i& tri = prototype.triangles[hit.hit.primID];
-  const float u = hit.hit.u, v = hit.hit.v, w = 1.0f - u - v;
+  const Eigen::Vector3i& tri = prototype.triangles[primitive];
+  const float w = 1.0f - u - v;
   ShadingPoint p;
-  p.t = hit.ray.tfar;
+  p.t = t;
   p.position = ray.origin + p.t * ray.direction;
   const Eigen::Vector3f& a = prototype.positions[tri[0]];
   const Eigen::Vector3f& b = prototype.positions[tri[1]];
@@ -227,39 +251,53 @@ std::optional<ShadingPoint> RenderScene::intersect(const Ray& ray) const {
     p.baked = w * instance.vertex_values[tri[0]] + u * instance.vertex_values[tri[1]] + v * instance.vertex_values[tri[2]];
   }
   p.material = instance.material;
-  p.instance = static_cast<int>(hit.hit.instID[0]);
-  p.primitive = static_cast<int>(hit.hit.primID);
+  p.instance = static_cast<int>(instance_id);
+  p.primitive = static_cast<int>(primitive);
   p.barycentric = Eigen::Vector3f(w, u, v);
   return p;
 }
 
 namespace {
 
-// Embree's context filter: a context that carries the instance to see through.
-struct IgnoringContext {
-  RTCIntersectContext context;  // first member: Embree passes its address back
-  unsigned ignore;
-};
-
+// Embree's context filter for occlusion rays that see through one instance: the instance's
+// index travels in the ray's id (RTC_INVALID_GEOMETRY_ID: none).
 void ignore_instance(const RTCFilterFunctionNArguments* args) {
-  const auto* self = reinterpret_cast<const IgnoringContext*>(args->context);
   for (unsigned i = 0; i < args->N; ++i) {
     if (args->valid[i] != -1) continue;
-    if (RTCHitN_instID(args->hit, args->N, i, 0) == self->ignore) args->valid[i] = 0;
+    if (RTCHitN_instID(args->hit, args->N, i, 0) == RTCRayN_id(args->ray, args->N, i)) args->valid[i] = 0;
   }
+}
+
+RTCRay occlusion_ray(const Ray& ray, int ignore) {
+  RTCRay r = embree_ray(ray);
+  r.id = ignore >= 0 ? static_cast<unsigned>(ignore) : RTC_INVALID_GEOMETRY_ID;
+  return r;
 }
 
 }  // namespace
 
 bool RenderScene::occluded(const Ray& ray, int ignore) const {
   if (!committed_) throw std::logic_error("RenderScene: occluded before commit");
-  IgnoringContext context;
-  rtcInitIntersectContext(&context.context);
-  context.ignore = static_cast<unsigned>(ignore);
-  if (ignore >= 0) context.context.filter = ignore_instance;
-  RTCRay r = embree_ray(ray);
-  rtcOccluded1(embree_->top, &context.context, &r);
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.filter = ignore_instance;
+  RTCRay r = occlusion_ray(ray, ignore);
+  rtcOccluded1(embree_->top, &context, &r);
   return r.tfar < 0.0f;  // Embree sets tfar to −∞ on a hit
+}
+
+void RenderScene::occluded_many(const std::vector<Ray>& rays, const std::vector<int>& ignore,
+                                    std::vector<char>& occluded) const {
+  if (!committed_) throw std::logic_error("RenderScene: occluded before commit");
+  thread_local std::vector<RTCRay> batch;
+  batch.resize(rays.size());
+  for (std::size_t i = 0; i < rays.size(); ++i) batch[i] = occlusion_ray(rays[i], ignore[i]);
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.filter = ignore_instance;
+  rtcOccluded1M(embree_->top, &context, batch.data(), static_cast<unsigned>(batch.size()), sizeof(RTCRay));
+  occluded.resize(rays.size());
+  for (std::size_t i = 0; i < rays.size(); ++i) occluded[i] = batch[i].tfar < 0.0f;
 }
 
 }  // namespace rice::shading

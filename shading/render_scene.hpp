@@ -54,9 +54,16 @@ class RenderScene {
   void commit();
 
   std::optional<ShadingPoint> intersect(const Ray& ray) const;
+  /// The first hits of many rays at once, through Embree's stream interface told they are
+  /// coherent (a pixel's camera rays): the same answers as intersect, faster.
+  void intersect_coherent(const std::vector<Ray>& rays, std::vector<std::optional<ShadingPoint>>& hits) const;
   /// Whether anything other than instance `ignore` (−1: none) lies along the ray within
   /// [t_min, t_max].
   bool occluded(const Ray& ray, int ignore = -1) const;
+  /// occluded for many rays at once (a pixel's shadow rays towards the suns) through Embree's
+  /// stream interface; `ignore` holds one instance (or −1) per ray. Not flagged coherent:
+  /// with the see-through filter, Embree 3.13's coherent stream never returned.
+  void occluded_many(const std::vector<Ray>& rays, const std::vector<int>& ignore, std::vector<char>& occluded) const;
 
   /// Per-vertex values of one instance (its prototype's #V), read back interpolated as
   /// ShadingPoint::baked; used for the subsurface reference's exitance. Callable after commit.
@@ -88,6 +95,8 @@ class RenderScene {
     std::vector<float> vertex_values;  // empty: none
   };
   struct Embree;
+  std::optional<ShadingPoint> shading_point(const Ray& ray, float t, unsigned instance, unsigned primitive, float u,
+                                            float v) const;
 
   std::unique_ptr<Embree> embree_;
   std::vector<std::unique_ptr<Prototype>> prototypes_;
