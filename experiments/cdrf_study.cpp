@@ -15,6 +15,7 @@
 #include "experiments/gnuplot.hpp"
 #include "experiments/interrupt.hpp"
 #include "experiments/output.hpp"
+#include "experiments/render_command.hpp"
 #include "grains/cultivar.hpp"
 #include "grains/grain_generator.hpp"
 #include "grains/water_content.hpp"
@@ -63,7 +64,7 @@ WaterContentFit fit_water_content(double absorption_percent, const CdrfStudySett
   WaterContentFit r;
   r.absorption_percent = absorption_percent;
   r.optics = grains::WaterContentModel::optics(absorption_percent);
-  const shading::Medium medium{r.optics.reduced_scattering, r.optics.absorption, 0.0, r.optics.refractive_index};
+  const shading::Medium medium = grain_medium(absorption_percent);
   for (const double radius_mm : settings.radii_mm) {
     stop_point();
     r.spheres.push_back(shading::sphere_exitance(
@@ -90,7 +91,7 @@ GrainCheck check_on_grain(const WaterContentFit& fit, const shading::MeshVertice
   scene.commit();
   shading::Lights lights;
   lights.suns.push_back({.direction = {0, 0, 1}, .angular_radius = 0.0f, .irradiance = shading::Color::Constant(1.0f)});
-  const shading::Medium medium{fit.optics.reduced_scattering, fit.optics.absorption, 0.0, fit.optics.refractive_index};
+  const shading::Medium medium = grain_medium(fit.absorption_percent);
   shading::BakeStats stats;
   const std::vector<float> m = shading::bake_subsurface(scene, {0}, {medium}, lights,
                                                          {.photons_per_light = photons, .seed = seed}, &stats)[0];

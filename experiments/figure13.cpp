@@ -96,8 +96,7 @@ void figure13_command(const Figure13Settings& settings, const std::filesystem::p
   std::vector<shading::Material> reference_materials = materials;
   for (int i = 0; i < n; ++i) {
     grain_instances[i] = i;
-    const grains::GrainOptics optics = grains::WaterContentModel::optics(absorption[i]);
-    media.push_back({optics.reduced_scattering, optics.absorption, 0.0, optics.refractive_index});
+    media.push_back(grain_medium(absorption[i]));
     reference_materials[i].kind = shading::MaterialKind::kSubsurfaceReference;
   }
   shading::BakeStats bake_stats;

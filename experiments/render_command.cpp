@@ -116,6 +116,11 @@ shading::Material rice_material(double absorption_percent) {
           .roughness = 0.25};
 }
 
+shading::Medium grain_medium(double absorption_percent) {
+  const grains::GrainOptics optics = grains::WaterContentModel::optics(absorption_percent);
+  return {optics.reduced_scattering, optics.absorption, 0.0, optics.refractive_index};
+}
+
 int add_grain_prototype(shading::RenderScene& scene, const shading::MeshVertices& V, const shading::MeshTriangles& F) {
   return scene.add_prototype(V, F, shading::vertex_mean_curvature(V, F));
 }

@@ -16,6 +16,7 @@
 #include "shading/lights.hpp"
 #include "shading/material.hpp"
 #include "shading/render_scene.hpp"
+#include "shading/random_walk.hpp"
 #include "shading/renderer.hpp"
 
 namespace rice::experiments {
@@ -46,6 +47,10 @@ void render_command(const RenderCommandSettings& settings, const std::filesystem
 /// The rice material at water absorption W: CDRF σ0 and albedo from the water-content model,
 /// and a wet, slightly rough dielectric surface.
 shading::Material rice_material(double absorption_percent);
+
+/// The grain's medium at water absorption W for the random-walk reference: the optics of the
+/// water-content model, isotropic scattering with μs = μs' (the similarity relation).
+shading::Medium grain_medium(double absorption_percent);
 
 /// Adds `V, F` as a prototype with its jet-fitted vertex curvature; returns its index.
 int add_grain_prototype(shading::RenderScene& scene, const shading::MeshVertices& V, const shading::MeshTriangles& F);

@@ -17,7 +17,6 @@
 #include "experiments/render_output.hpp"
 #include "grains/cultivar.hpp"
 #include "grains/grain_generator.hpp"
-#include "grains/water_content.hpp"
 #include "shading/subsurface_bake.hpp"
 
 namespace rice::experiments {
@@ -131,10 +130,7 @@ void render_study_command(const RenderStudySettings& settings, const std::filesy
   }
 
   // The random-walk reference at growing photon counts; the CDRF against the best of them.
-  std::vector<shading::Medium> media;
-  const grains::GrainOptics optics = grains::WaterContentModel::optics(kAbsorption);
-  for (size_t g = 0; g < plate.grain_instances.size(); ++g)
-    media.push_back({optics.reduced_scattering, optics.absorption, 0.0, optics.refractive_index});
+  const std::vector<shading::Medium> media(plate.grain_instances.size(), grain_medium(kAbsorption));
   std::vector<shading::Material> reference_materials = materials;
   reference_materials[0].kind = shading::MaterialKind::kSubsurfaceReference;
   std::vector<shading::Image> baked_images;

@@ -15,7 +15,10 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <tuple>
 #include <vector>
+
+#include "shading/tangent_frame.hpp"
 
 namespace rice::shading {
 
@@ -34,17 +37,21 @@ struct Sun {
 
   /// The sun's frame and weight, computed once per image.
   struct Sampler {
-    Eigen::Vector3d w, t, s;
+    Eigen::Vector3d w = Eigen::Vector3d::UnitZ(), t = Eigen::Vector3d::UnitX(), s = Eigen::Vector3d::UnitY();
     double one_minus_cos_max = 0.0;
     Color weight = Color::Zero();
 
-    LightSample sample(double a, double b) const {
+    /// A direction uniform over the sun's cone, in double.
+    Eigen::Vector3d direction(double a, double b) const {
       const double one_minus_cos = a * one_minus_cos_max;
       const double cos_t = 1.0 - one_minus_cos;
       const double sin_t = std::sqrt(std::max(0.0, one_minus_cos * (2.0 - one_minus_cos)));
       const double phi = 2.0 * std::numbers::pi * b;
-      return {(cos_t * w + sin_t * (std::cos(phi) * t + std::sin(phi) * s)).normalized().cast<float>(),
-              std::numeric_limits<float>::infinity(), weight};
+      return (cos_t * w + sin_t * (std::cos(phi) * t + std::sin(phi) * s)).normalized();
+    }
+
+    LightSample sample(double a, double b) const {
+      return {direction(a, b).cast<float>(), std::numeric_limits<float>::infinity(), weight};
     }
   };
 
@@ -53,8 +60,7 @@ struct Sun {
     // keeps two digits and the irradiance came out 0.3% low.
     Sampler p;
     p.w = direction.cast<double>().normalized();
-    p.t = (std::abs(p.w.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY()).cross(p.w).normalized();
-    p.s = p.w.cross(p.t);
+    std::tie(p.t, p.s) = tangent_frame(p.w);
     const double half = std::sin(0.5 * angular_radius);
     p.one_minus_cos_max = 2.0 * half * half;
     const double solid_angle = 2.0 * std::numbers::pi * p.one_minus_cos_max;
@@ -105,11 +111,14 @@ struct Environment {
 
   bool empty() const { return image.empty() && (constant == 0.0f).all(); }
 
+  /// A direction uniform over the sphere, in double.
+  static Eigen::Vector3d direction(double a, double b) {
+    const double z = 1.0 - 2.0 * a, r = std::sqrt(std::max(0.0, 1.0 - z * z)), phi = 2.0 * std::numbers::pi * b;
+    return {r * std::cos(phi), r * std::sin(phi), z};
+  }
+
   LightSample sample(double a, double b) const {
-    const float z = 1.0f - 2.0f * static_cast<float>(a);
-    const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
-    const float phi = 2.0f * std::numbers::pi_v<float> * static_cast<float>(b);
-    const Eigen::Vector3f d(r * std::cos(phi), r * std::sin(phi), z);
+    const Eigen::Vector3f d = direction(a, b).cast<float>();
     return {d, std::numeric_limits<float>::infinity(), radiance(d) * (4.0f * std::numbers::pi_v<float>)};
   }
 };

@@ -24,6 +24,7 @@
 #include "shading/cdrf.hpp"
 #include "shading/fresnel.hpp"
 #include "shading/lights.hpp"
+#include "shading/tangent_frame.hpp"
 
 namespace rice::shading {
 
@@ -99,8 +100,7 @@ inline double sample_specular(const Eigen::Vector3f& n, const Eigen::Vector3f& w
   const double phi = 2.0 * std::numbers::pi * b;
   const double cos_h = std::sqrt((1.0 - a) / (1.0 + (alpha * alpha - 1.0) * a));
   const double sin_h = std::sqrt(std::max(0.0, 1.0 - cos_h * cos_h));
-  const Eigen::Vector3f t = (std::abs(n.x()) < 0.9f ? Eigen::Vector3f::UnitX() : Eigen::Vector3f::UnitY()).cross(n).normalized();
-  const Eigen::Vector3f s = n.cross(t);
+  const auto [t, s] = tangent_frame(n);
   const Eigen::Vector3f h =
       (static_cast<float>(cos_h) * n + static_cast<float>(sin_h) * (static_cast<float>(std::cos(phi)) * t + static_cast<float>(std::sin(phi)) * s)).normalized();
   const double o_dot_h = wo.dot(h);

@@ -8,12 +8,13 @@
 #include <cmath>
 #include <cstdint>
 
+#include "shading/tangent_frame.hpp"
+
 namespace rice::shading {
 
 /// A direction at angle acos(mu) from unit d, at azimuth phi around it.
 inline Eigen::Vector3d rotate_about(const Eigen::Vector3d& d, double mu, double phi) {
-  const Eigen::Vector3d a = std::abs(d.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
-  const Eigen::Vector3d u = d.cross(a).normalized(), v = d.cross(u);
+  const auto [u, v] = tangent_frame(d);
   const double s = std::sqrt(std::max(0.0, 1.0 - mu * mu));
   return mu * d + s * (std::cos(phi) * u + std::sin(phi) * v);
 }

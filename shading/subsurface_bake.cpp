@@ -11,6 +11,7 @@
 
 #include "shading/fresnel.hpp"
 #include "shading/scattering.hpp"
+#include "shading/tangent_frame.hpp"
 
 namespace rice::shading {
 namespace {
@@ -19,12 +20,13 @@ using Eigen::Vector3d;
 using Eigen::Vector3f;
 constexpr double kPi = std::numbers::pi;
 
-// A light as the bake sees it: directions photons travel along, and the flux each carries.
+// A light as the bake sees it: a sun (sampled over its disc as the renderer does) or the
+// uniform sky (sampled over the sphere), and what its photons carry per unit disc area:
+// E for a sun, L 4π for the sky.
 struct PhotonSource {
-  bool sky = false;
-  Vector3d towards_light = Vector3d::UnitZ();  // sun only
-  double sun_half_angle = 0.0;
-  Color radiance_or_irradiance = Color::Zero();
+  const Sun* sun = nullptr;  // null: the sky
+  Sun::Sampler sun_sampler;
+  double carried = 0.0;
 };
 
 // Walks one photon from its entry; splats escaping flux (times `flux`) onto `tally`.
@@ -81,10 +83,10 @@ std::vector<std::vector<float>> bake_subsurface(RenderScene& scene, const std::v
   if (!lights.environment.image.empty())
     throw std::invalid_argument("bake_subsurface: sky images are not supported, only a uniform sky");
   const auto start = std::chrono::steady_clock::now();
+  // The media are grey, so one walk serves all three channels: the light's mean.
   std::vector<PhotonSource> sources;
-  for (const Sun& sun : lights.suns)
-    sources.push_back({false, sun.direction.cast<double>().normalized(), sun.angular_radius, sun.irradiance});
-  if (!lights.environment.empty()) sources.push_back({true, Vector3d::UnitZ(), 0.0, lights.environment.constant});
+  for (const Sun& sun : lights.suns) sources.push_back({&sun, sun.sampler(), sun.irradiance.mean()});
+  if (!lights.environment.empty()) sources.push_back({nullptr, {}, 4.0 * kPi * lights.environment.constant.mean()});
 
   std::vector<std::vector<float>> exitance;
   long long traced = 0;
@@ -99,7 +101,7 @@ std::vector<std::vector<float>> bake_subsurface(RenderScene& scene, const std::v
     for (std::size_t s = 0; s < sources.size(); ++s) {
       const PhotonSource& source = sources[s];
       const double disc = kPi * radius * radius;
-      const double flux = disc * (source.sky ? 4.0 * kPi : 1.0) / static_cast<double>(settings.photons_per_light);
+      const double flux = disc * source.carried / static_cast<double>(settings.photons_per_light);
       const long long batches = (settings.photons_per_light + settings.batch - 1) / settings.batch;
       std::vector<std::vector<double>> partial(static_cast<std::size_t>(batches));
       tbb::parallel_for(0LL, batches, [&](long long b) {
@@ -108,16 +110,12 @@ std::vector<std::vector<float>> bake_subsurface(RenderScene& scene, const std::v
         std::uniform_real_distribution<double> unit(0.0, 1.0);
         const long long n = std::min<long long>(settings.batch, settings.photons_per_light - b * settings.batch);
         for (long long p = 0; p < n; ++p) {
-          Vector3d towards = source.towards_light;
-          if (source.sky) {
-            const double z = 1.0 - 2.0 * unit(rng), r = std::sqrt(std::max(0.0, 1.0 - z * z)), phi = 2 * kPi * unit(rng);
-            towards = Vector3d(r * std::cos(phi), r * std::sin(phi), z);
-          } else if (source.sun_half_angle > 0.0) {
-            const double half = std::sin(0.5 * source.sun_half_angle);
-            towards = rotate_about(towards, 1.0 - unit(rng) * 2.0 * half * half, 2 * kPi * unit(rng));
+          Vector3d towards = source.sun_sampler.w;  // a sun without size: its axis
+          if (!source.sun || source.sun->angular_radius > 0.0f) {
+            const double a = unit(rng), b = unit(rng);
+            towards = source.sun ? source.sun_sampler.direction(a, b) : Environment::direction(a, b);
           }
-          const Vector3d u = towards.cross(std::abs(towards.x()) < 0.9 ? Vector3d::UnitX() : Vector3d::UnitY()).normalized();
-          const Vector3d v = towards.cross(u);
+          const auto [u, v] = tangent_frame(towards);
           const double rho = radius * std::sqrt(unit(rng)), angle = 2 * kPi * unit(rng);
           const Vector3d origin = centre.cast<double>() + 2.0 * radius * towards +
                                   rho * (std::cos(angle) * u + std::sin(angle) * v);
@@ -127,10 +125,8 @@ std::vector<std::vector<float>> bake_subsurface(RenderScene& scene, const std::v
         }
         partial[b] = std::move(tally);
       });
-      // The media are grey, so one walk serves all three channels: the light's mean.
-      const double channel = source.radiance_or_irradiance.mean();
       for (const auto& tally : partial)
-        for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += channel * tally[i];
+        for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += tally[i];
       traced += settings.photons_per_light;
     }
     const std::vector<double> area = scene.vertex_areas(instance);

@@ -28,6 +28,11 @@ testing::TestMesh square(double h, double z) {
   return m;
 }
 
+// Adds `mesh` as its own prototype, placed where it is, with `material`.
+void place(RenderScene& scene, const testing::TestMesh& mesh, int material = 0) {
+  scene.add_instance(scene.add_prototype(mesh.V, mesh.F), Eigen::Affine3d::Identity(), material);
+}
+
 Camera looking_down(double height, double fov) {
   Camera c;
   c.position = {0, 0, height};
@@ -42,7 +47,7 @@ Camera looking_down(double height, double fov) {
 TEST(Renderer, DiffuseSphereInAUniformEnvironmentReflectsItsAlbedo) {
   RenderScene scene;
   const auto sphere = testing::icosphere(5);
-  scene.add_instance(scene.add_prototype(sphere.V, sphere.F), Eigen::Affine3d::Identity(), 0);
+  place(scene, sphere);
   scene.commit();
   Lights lights;
   lights.environment.constant = Color::Constant(1.0f);
@@ -61,7 +66,7 @@ TEST(Renderer, DiffuseSphereInAUniformEnvironmentReflectsItsAlbedo) {
 TEST(Renderer, LambertianPlaneUnderTheSun) {
   RenderScene scene;
   const auto ground = square(1.0, 0.0);
-  scene.add_instance(scene.add_prototype(ground.V, ground.F), Eigen::Affine3d::Identity(), 0);
+  place(scene, ground);
   scene.commit();
   Lights lights;
   lights.suns.push_back({.direction = {std::sin(1.0472f), 0.0f, std::cos(1.0472f)},
@@ -116,8 +121,8 @@ TEST(Renderer, RiceSphereFollowsTheCdrfPastTheTerminator) {
 TEST(Renderer, ShadowsAreASwitch) {
   RenderScene scene;
   const auto ground = square(1.0, 0.0), blocker = square(0.2, 0.5);
-  scene.add_instance(scene.add_prototype(ground.V, ground.F), Eigen::Affine3d::Identity(), 0);
-  scene.add_instance(scene.add_prototype(blocker.V, blocker.F), Eigen::Affine3d::Identity(), 0);
+  place(scene, ground);
+  place(scene, blocker);
   scene.commit();
   Lights lights;
   lights.suns.push_back({.direction = {0.0f, 0.0f, 1.0f}, .irradiance = Color::Constant(1.0f)});
@@ -134,7 +139,7 @@ TEST(Renderer, ShadowsAreASwitch) {
 TEST(Renderer, SameSeedSameImageOnAnyThreadCount) {
   RenderScene scene;
   const auto sphere = testing::icosphere(3);
-  scene.add_instance(scene.add_prototype(sphere.V, sphere.F), Eigen::Affine3d::Identity(), 0);
+  place(scene, sphere);
   scene.commit();
   Lights lights;
   lights.environment.constant = Color::Constant(1.0f);
@@ -171,7 +176,7 @@ TEST(Renderer, InstancesMoveAndScaleTheirPrototype) {
 TEST(Renderer, RefusesBadSettingsAndMaterials) {
   RenderScene scene;
   const auto sphere = testing::icosphere(1);
-  scene.add_instance(scene.add_prototype(sphere.V, sphere.F), Eigen::Affine3d::Identity(), 3);
+  place(scene, sphere, 3);
   scene.commit();
   const std::vector<Material> materials(1);
   EXPECT_THROW(render(scene, materials, {}, {}, table(), {.width = 0}), std::invalid_argument);
@@ -183,8 +188,8 @@ TEST(Renderer, RefusesBadSettingsAndMaterials) {
 TEST(Renderer, StratifiedAndSobolConvergeFasterThanIndependent) {
   RenderScene scene;
   const auto ground = square(1.0, 0.0), blocker = square(0.1, 0.2);
-  scene.add_instance(scene.add_prototype(ground.V, ground.F), Eigen::Affine3d::Identity(), 0);
-  scene.add_instance(scene.add_prototype(blocker.V, blocker.F), Eigen::Affine3d::Identity(), 0);
+  place(scene, ground);
+  place(scene, blocker);
   scene.commit();
   Lights lights;
   lights.quads.push_back({.corner = {-0.2f, -0.2f, 0.6f}, .edge_u = {0.4f, 0, 0}, .edge_v = {0, 0.4f, 0}});
