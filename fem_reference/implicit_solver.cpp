@@ -59,6 +59,8 @@ ImplicitSolver::ImplicitSolver(xpbd::Model& model, const ImplicitSettings& setti
   append_if_used(dynamic, step_volume_.get(), h * h);
   append_if_used(dynamic, step_distance_.get(), h * h);
   append_if_used(dynamic, step_attachment_.get(), h * h);
+  step_strain_rate_damping_ = std::make_unique<StrainRateDampingForm>(model.neo_hookean, h);
+  append_if_used(dynamic, step_strain_rate_damping_.get(), h * h);
   dynamic_ = std::make_unique<NewtonSolver>(dynamic, fixed_, settings.newton);
   static_ = std::make_unique<NewtonSolver>(quasi_static, fixed_, settings.newton);
 }
@@ -82,6 +84,7 @@ void ImplicitSolver::step() {
   step_neo_hookean_->set_targets(x_start);
   step_volume_->set_targets(x_start);
   step_distance_->set_targets(x_start);
+  step_strain_rate_damping_->set_start(x_start);
 
   // Start from XPBD's prediction x̃ = x̂ + h² M⁻¹ f.
   const bool has_forces = model_.external_forces.rows() != 0;

@@ -4,10 +4,11 @@
 // "Optimization integrator for large time steps")
 //
 //   E(x) = ½‖x − x̂‖²_M − h² fᵀx + h² U(x) + h² Ψ(x),     x̂ = xⁿ + h vⁿ,        (1)
-//   U = Σ ½ Cᵀα⁻¹C − U_rest,    Ψ = Σ β/(2h) (C(x) − C(xⁿ))²,
+//   U = Σ ½ Cᵀα⁻¹C − U_rest,    Ψ = Σ β/(2h) (C(x) − C(xⁿ))² + Ψ^E,
 //
 // with f the gravity and external loads, then sets v = (x − xⁿ)/h. Ψ = h·D is the Rayleigh
-// dissipation D = ½ ĊᵀβĊ times h, with Ċ ≈ (C(x) − C(xⁿ))/h.
+// dissipation D = ½ ĊᵀβĊ times h, with Ċ ≈ (C(x) − C(xⁿ))/h; Ψ^E is the strain-rate damping
+// of the tets that have it (strain_rate_damping_form.hpp).
 //
 // Correspondence with XPBD (Macklin et al. 2016, §4–5). XPBD's fixed point for K → ∞ solves
 // eqs. (18), (26) with g = 0:  M(x − x̃) = ∇C(x)ᵀλ,  C + α̃λ + γ ∇C(x)(x − xⁿ) = 0, with
@@ -36,6 +37,7 @@
 #include "fem_reference/inertia_form.hpp"
 #include "fem_reference/load_form.hpp"
 #include "fem_reference/newton_solver.hpp"
+#include "fem_reference/strain_rate_damping_form.hpp"
 #include "xpbd/model.hpp"
 
 namespace rice::fem {
@@ -78,6 +80,7 @@ class ImplicitSolver {
   std::unique_ptr<ConstraintPotentialForm<TetVolumeKernel>> step_volume_;
   std::unique_ptr<ConstraintPotentialForm<DistanceKernel>> step_distance_;
   std::unique_ptr<ConstraintPotentialForm<AttachmentKernel>> step_attachment_;
+  std::unique_ptr<StrainRateDampingForm> step_strain_rate_damping_;
   std::unique_ptr<NewtonSolver> dynamic_, static_;
   NewtonReport report_;
   long step_ = 0;

@@ -49,6 +49,9 @@ struct NeoHookeanTet {
   /// λ = λ_Lamé + μ: a body then answers small loads as linear elasticity with (E, ν) does.
   double mu, lambda;
   double beta_deviatoric, beta_hydrostatic;  ///< β_D, β_H
+  /// τ [s] of the dissipation ½ τ Ė:𝒞:Ė on every strain rate (strain_rate_damping.hpp); 0: off.
+  double strain_rate_damping = 0.0;
+  double lambda_lame() const { return lambda - mu; }  ///< λ_L of the small-strain material
   double compliance_deviatoric() const { return 1.0 / (mu * rest_volume); }      ///< α_D
   double compliance_hydrostatic() const { return 1.0 / (lambda * rest_volume); }  ///< α_H
 };
@@ -122,9 +125,11 @@ Particles make_particles(const TetMesh& mesh, double density);
 
 /// One Neo-Hookean pair per tetrahedron with the Lamé parameters `material` at small strain
 /// (the energy's λ is material.lambda + material.mu, see NeoHookeanTet). `rayleigh_time` τ [s] sets stiffness-proportional
-/// damping β = τ/α for both constraints, so that γ = αβ/h = τ/h (XPBD eq. 26).
+/// damping β = τ/α for both constraints, so that γ = αβ/h = τ/h (XPBD eq. 26); it damps the
+/// rates of ‖F‖ and det F only. `strain_rate_time` τ_E [s] sets the damping of every strain
+/// rate (NeoHookeanTet::strain_rate_damping), which needs 3λ + 2μ > 0.
 void add_neo_hookean_tets(Model& model, const TetMesh& mesh, LameParameters material,
-                          double rayleigh_time = 0.0);
+                          double rayleigh_time = 0.0, double strain_rate_time = 0.0);
 
 /// One distance constraint per unique tet edge. Each spring's compliance is
 /// α = L² / (E V_e), V_e the volume of the tets around the edge shared among their six edges:

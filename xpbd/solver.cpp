@@ -16,6 +16,7 @@
 #include "xpbd/neo_hookean_constraints.hpp"
 #include "xpbd/sleeping.hpp"
 #include "xpbd/tet_volume_constraint.hpp"
+#include "xpbd/vertex_block_descent.hpp"
 
 namespace rice::xpbd {
 namespace {
@@ -57,6 +58,11 @@ Solver::Solver(Model& model, const SolverSettings& settings) : model_(model), se
     throw std::invalid_argument(
         "Solver: PBD mode cannot project the Neo-Hookean pair (C_D and C_H are not zero at "
         "rest, so a stiffness in [0, 1] has no meaning for them); use springs and volumes");
+  if (settings.method == Method::kVbd && (!model.distances.empty() || !model.volumes.empty()))
+    throw std::invalid_argument("Solver: vertex block descent solves Neo-Hookean tets only; this model has "
+                                "springs or tet volumes (use Method::kXpbd)");
+  if (settings.method != Method::kXpbd && settings.primal_correction)
+    throw std::invalid_argument("Solver: the primal-residual correction belongs to Method::kXpbd");
   for (const Attachment& a : model.attachments)
     if (a.particle < 0 || a.particle >= p.size())
       throw std::invalid_argument("Solver: attachment names particle " + std::to_string(a.particle));
@@ -65,6 +71,9 @@ Solver::Solver(Model& model, const SolverSettings& settings) : model_(model), se
   coloring_distance_ = color_constraints<2>(model.distances, p.size());
   coloring_volume_ = color_constraints<4>(model.volumes, p.size());
   coloring_neo_hookean_ = color_constraints<4>(model.neo_hookean, p.size());
+  const bool strain_rate_damping = std::any_of(model.neo_hookean.begin(), model.neo_hookean.end(),
+                                               [](const NeoHookeanTet& t) { return t.strain_rate_damping > 0.0; });
+  if (settings.method == Method::kVbd || strain_rate_damping) vbd_ = std::make_unique<VertexBlockDescent>(model);
 }
 
 Solver::~Solver() = default;
@@ -122,6 +131,10 @@ void Solver::substep(double h, bool end_of_interval) {
     impulse_neo_hookean_.assign(model_.neo_hookean.size(), Eigen::Matrix<double, 3, 4>::Zero());
   lambda_attachment_.assign(model_.attachments.size(), Vec3::Zero());
   if (settings_.diagnostics) x_predicted_ = model_.particles.x;
+  if (settings_.method == Method::kVbd)
+    start_vertex_block_descent(h);
+  else if (vbd_)
+    vbd_->begin_step(model_, x_previous_, h);
   if (contacts_) {
     auto clock = std::chrono::steady_clock::now();
     contacts_->begin_substep(time() + substep_ * h, h, x_previous_);
@@ -131,6 +144,7 @@ void Solver::substep(double h, bool end_of_interval) {
     iterate(h);
     if (contacts_) contacts_->project(x_previous_);
   }
+  if (settings_.method != Method::kVbd && vbd_) apply_strain_rate_damping();
   Particles& p = model_.particles;
   p.v = (p.x - x_previous_) / h;
   for (RigidBody& body : model_.rigid_bodies) update_velocities(body, h);
@@ -166,6 +180,33 @@ void Solver::predict(double h) {
   }
 }
 
+void Solver::start_vertex_block_descent(double h) {
+  Particles& p = model_.particles;
+  y_ = p.x;
+  vbd_->begin_step(model_, x_previous_, h);
+  // x⁰ = y − h² g (1 − s), s = clamp(aⁿ·ĝ / |g|, 0, 1), aⁿ = (vⁿ − vⁿ⁻¹)/h; predict() made
+  // p.v = vⁿ + h a_ext, so vⁿ = p.v − h g for a particle without external force.
+  const double g = model_.gravity.norm();
+  if (g > 0.0 && v_previous_.rows() == p.size()) {
+    const Vec3 down = model_.gravity / g;
+    for (int i = 0; i < p.size(); ++i) {
+      if (p.w[i] == 0.0 || (!asleep_particle_.empty() && asleep_particle_[i])) continue;
+      const Vec3 v_start = p.v.row(i).transpose() - h * model_.gravity;
+      const double share = std::clamp((v_start - v_previous_.row(i).transpose()).dot(down) / (h * g), 0.0, 1.0);
+      p.x.row(i) -= (h * h * (1.0 - share)) * model_.gravity.transpose();
+    }
+  }
+  v_previous_ = p.v.rowwise() - h * model_.gravity.transpose();
+}
+
+void Solver::apply_strain_rate_damping() {
+  const Positions constrained = model_.particles.x;  // x*
+  vbd_->sweep(model_, constrained, VertexBlockDescent::Terms::kStrainRateDampingOnly,
+              settings_.execution == Execution::kParallel, asleep_particle_);
+  if (model_.ground) project_ground();
+  if (contacts_) contacts_->project(x_previous_);
+}
+
 void Solver::mark_sleeping() {
   asleep_particle_.assign(model_.particles.size(), 0);
   asleep_rigid_.assign(model_.rigid_bodies.size(), 0);
@@ -195,7 +236,11 @@ void Solver::for_each_constraint(const Coloring& coloring, Project&& project) {
 }
 
 void Solver::iterate(double h) {
-  for_each_constraint(coloring_neo_hookean_, [&](int c) { project_neo_hookean(c, h); });
+  if (settings_.method == Method::kVbd)
+    vbd_->sweep(model_, y_, VertexBlockDescent::Terms::kAll, settings_.execution == Execution::kParallel,
+                asleep_particle_);
+  else
+    for_each_constraint(coloring_neo_hookean_, [&](int c) { project_neo_hookean(c, h); });
   for_each_constraint(coloring_volume_, [&](int c) { project_volume(c, h); });
   for_each_constraint(coloring_distance_, [&](int c) { project_distance(c, h); });
   project_attachments(h);

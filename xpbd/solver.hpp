@@ -5,6 +5,12 @@
 // (distance_constraint.hpp, tet_volume_constraint.hpp, neo_hookean_constraints.hpp); this
 // class owns the bookkeeping: multipliers, colouring, diagnostics.
 //
+// Strain-rate damping (strain_rate_damping.hpp) is part of the potential under Method::kVbd;
+// under Method::kXpbd it is applied after the K iterations of each substep by one sweep of
+// vertex block descent on the damping term alone (operator splitting: the constraint solve
+// gives x*, then x minimises Σ m/(2h²)‖x − x*‖² + Ψ^E(x)), followed by one more contact
+// projection. What a model leaves off costs nothing.
+//
 // The solver keeps a reference to the model and colours its constraints once, at
 // construction: build a new solver after adding or removing constraints.
 #pragma once
@@ -22,6 +28,11 @@ namespace rice::xpbd {
 enum class Method {
   kXpbd,  ///< compliant constraints, λ accumulated over a substep (XPBD eq. 18, 26)
   kPbd,   ///< classic PBD: stiffness k ∈ [0, 1] per projection, no λ; kept to show what XPBD fixes
+  /// Vertex block descent on the Neo-Hookean tets' backward-Euler potential
+  /// (vertex_block_descent.hpp): K sweeps of per-particle Newton steps, stable at substeps far
+  /// past the tets' wave-crossing time. Attachments, the ground and contacts stay projections
+  /// after each sweep; springs and tet volumes are not supported.
+  kVbd,
 };
 
 enum class Execution {
@@ -72,6 +83,7 @@ class SimulationError : public std::runtime_error {
 };
 
 class ContactSolver;
+class VertexBlockDescent;
 
 /// Wall time spent in each part of step() since the solver was built [s]; the rest of
 /// `total` is prediction, constraint and contact solves, and velocity updates.
@@ -106,6 +118,11 @@ class Solver {
   /// `end_of_interval`: the last substep before the next broad phase.
   void substep(double h, bool end_of_interval);
   void predict(double h);
+  /// Method::kVbd: keeps the prediction as y and starts from the adaptive initial guess of
+  /// Chen et al. 2024 (§3.6): gravity's share of h² g that the particle's last acceleration
+  /// showed, so a resting body is not pushed into what holds it.
+  void start_vertex_block_descent(double h);
+  void apply_strain_rate_damping();
   /// Per particle and per rigid body: 1 when its body sleeps (sleeping.hpp); empty when
   /// sleeping is off.
   void mark_sleeping();
@@ -133,6 +150,9 @@ class Solver {
   std::vector<Eigen::Matrix<double, 3, 4>> impulse_neo_hookean_;
   std::vector<Vec3> lambda_attachment_;
   std::unique_ptr<ContactSolver> contacts_;
+  std::unique_ptr<VertexBlockDescent> vbd_;  ///< Method::kVbd, or strain-rate damping under XPBD
+  Positions y_;                              ///< Method::kVbd: the substep's inertial prediction
+  Positions v_previous_;                     ///< Method::kVbd: velocities at the last substep's start
   std::vector<char> asleep_particle_, asleep_rigid_;
   SolverTimings timings_;
   Coloring coloring_distance_, coloring_volume_, coloring_neo_hookean_;

@@ -50,6 +50,19 @@ inline Vec12 gradient_from_dF(const Mat3& dCdF, const Mat3& Dm_inv) {
   return g;
 }
 
+/// The weights b_k of particle k in F = Σ_k x_k b_kᵀ: row k−1 of Dm⁻¹ for k = 1..3, minus
+/// their sum for k = 0. Moving x_k by δ changes F by δ b_kᵀ.
+inline Vec3 stencil_weights(const Mat3& Dm_inv, int k) {
+  return k == 0 ? Vec3(-Dm_inv.colwise().sum().transpose()) : Vec3(Dm_inv.row(k - 1).transpose());
+}
+
+/// ∂C/∂x_k = (∂C/∂F) b_k, one particle's part of gradient_from_dF.
+inline Vec3 vertex_gradient(const Mat3& dCdF, const Vec3& b) { return dCdF * b; }
+
+/// ∂²C/∂x_k² = Σ_{c,c'} b_c b_c' (∂²C/∂F²)[block (c, c')], the diagonal 3×3 block of
+/// hessian_from_d2F for particle k with weights b = b_k (vec F column-major, index a + 3c).
+Mat3 vertex_hessian(const Mat9& d2CdF2, const Vec3& b);
+
 /// ∂vec(F)/∂x (9×12), constant for a linear tetrahedron.
 Eigen::Matrix<double, 9, 12> dF_dx(const Mat3& Dm_inv);
 

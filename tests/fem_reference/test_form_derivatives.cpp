@@ -9,6 +9,7 @@
 #include "fem_reference/constraint_potential_form.hpp"
 #include "fem_reference/inertia_form.hpp"
 #include "fem_reference/load_form.hpp"
+#include "fem_reference/strain_rate_damping_form.hpp"
 #include "tests/common/finite_differences.hpp"
 #include "tests/common/jittered_mesh.hpp"
 #include "xpbd/energy.hpp"
@@ -66,12 +67,12 @@ void check_form(const Form& form, const Positions& x, double scale) {
 }
 
 /// A small irregular Neo-Hookean block (size 1 cm) with springs, volumes and attachments,
-/// all with damping.
+/// all with damping (the tets with both kinds).
 xpbd::Model make_model() {
   const xpbd::TetMesh mesh = testing::jittered_box_mesh(xpbd::Vec3(0.02, 0.01, 0.01), 2, 1, 1, 0.0);
   xpbd::Model model;
   model.particles = xpbd::make_particles(mesh, 1000.0);
-  xpbd::add_neo_hookean_tets(model, mesh, xpbd::lame_from_young_poisson(1e5, 0.3), 0.01);
+  xpbd::add_neo_hookean_tets(model, mesh, xpbd::lame_from_young_poisson(1e5, 0.3), 0.01, 0.02);
   xpbd::add_edge_springs(model, mesh, 1e5, 0.01);
   xpbd::add_tet_volumes(model, mesh, 1e5, 0.01);
   model.attachments.push_back({0, xpbd::Vec3(0.001, -0.002, 0.0), 1e-4});
@@ -111,6 +112,9 @@ void check_all_forms(const Positions& x, const Positions& x_start) {
   forms.push_back(std::move(step_nh));
   forms.push_back(std::move(step_volume));
   forms.push_back(std::move(step_distance));
+  auto strain_rate_damping = std::make_unique<StrainRateDampingForm>(model.neo_hookean, h);
+  strain_rate_damping->set_start(x_start);
+  forms.push_back(std::move(strain_rate_damping));
   auto inertia = std::make_unique<InertiaForm>(model.particles.w);
   inertia->set_target(x_start);
   forms.push_back(std::move(inertia));

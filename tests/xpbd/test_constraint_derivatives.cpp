@@ -9,6 +9,7 @@
 #include "xpbd/distance_constraint.hpp"
 #include "xpbd/energy.hpp"
 #include "xpbd/neo_hookean_constraints.hpp"
+#include "xpbd/strain_rate_damping.hpp"
 #include "xpbd/tet_volume_constraint.hpp"
 
 namespace rice::xpbd {
@@ -111,7 +112,82 @@ TEST_P(TetKernelDerivatives, VolumeMatchesFiniteDifferences) {
     expect_derivatives_match(volume, x, scale, "volume at " + name);
 }
 
+TEST_P(TetKernelDerivatives, StrainRateDampingMatchesFiniteDifferences) {
+  const double scale = GetParam();
+  const Mat3 Dm_inv = edge_matrix(regular_tet(scale)).inverse();
+  const double mu = 3e4, lambda_lame = 5e4;
+  for (const auto& [start_name, x_start] : tet_states(scale)) {
+    const Mat3 F_start = deformation_gradient(x_start, Dm_inv);
+    const Kernel damping{
+        [=](const Eigen::VectorXd& x) {
+          return strain_rate_damping_value(F_start, deformation_gradient(x, Dm_inv) - F_start, mu, lambda_lame);
+        },
+        [=](const Eigen::VectorXd& x) -> Eigen::VectorXd {
+          return gradient_from_dF(
+              strain_rate_damping_dF(F_start, deformation_gradient(x, Dm_inv) - F_start, mu, lambda_lame), Dm_inv);
+        },
+        [=](const Eigen::VectorXd&) -> Eigen::MatrixXd {
+          return hessian_from_d2F(strain_rate_damping_d2F(F_start, mu, lambda_lame), Dm_inv);
+        }};
+    for (const auto& [name, x] : tet_states(scale))
+      if (name != start_name)  // at x = xⁿ the gradient is zero, which a relative error cannot judge
+        expect_derivatives_match(damping, x, scale, "damping from " + start_name + " at " + name);
+  }
+}
+
+TEST_P(TetKernelDerivatives, VertexBlocksAreTheDiagonalBlocksOfTheStencilDerivatives) {
+  // What vertex block descent reads per particle (tet_stencil.hpp) against the 12-vector
+  // gradient and 12×12 Hessian, for both constraints and the damping; ∂²C_H/∂x_k² = 0.
+  const double scale = GetParam();
+  const Mat3 Dm_inv = edge_matrix(regular_tet(scale)).inverse();
+  const double mu = 3e4, lambda_lame = 5e4;
+  for (const auto& [name, x] : tet_states(scale)) {
+    const Mat3 F = deformation_gradient(x, Dm_inv);
+    const Vec12 gD = neo_hookean_deviatoric_gradient(x, Dm_inv);
+    const Mat12 HD = neo_hookean_deviatoric_hessian(x, Dm_inv);
+    const Mat12 HH = neo_hookean_hydrostatic_hessian(x, Dm_inv);
+    const Mat12 HE = hessian_from_d2F(strain_rate_damping_d2F(F, mu, lambda_lame), Dm_inv);
+    for (int k = 0; k < 4; ++k) {
+      SCOPED_TRACE(name + ", corner " + std::to_string(k));
+      const Vec3 b = stencil_weights(Dm_inv, k);
+      const double tolerance = 1e-12 * HD.norm();
+      EXPECT_LT((vertex_gradient(neo_hookean_deviatoric_dF(F), b) - gD.segment<3>(3 * k)).norm(), 1e-12 * gD.norm());
+      const auto block = [k](const Mat12& H) { return Mat3(H.block<3, 3>(3 * k, 3 * k)); };
+      EXPECT_LT((vertex_hessian(neo_hookean_deviatoric_d2F(F), b) - block(HD)).norm(), tolerance);
+      EXPECT_LT(block(HH).norm(), 1e-12 * HH.norm());
+      EXPECT_LT((strain_rate_damping_vertex_hessian(F, b, mu, lambda_lame) - block(HE)).norm(), 1e-12 * HE.norm());
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(MetreAndMillimetre, TetKernelDerivatives, ::testing::Values(1.0, 1e-3));
+
+TEST(StrainRateDamping, IsTheElasticStiffnessAtRestAndIgnoresRotation) {
+  // At F = I the damping's Hessian in F is the Neo-Hookean pair's (the small-strain
+  // stiffness, with the model's λ = λ_L + μ): the damping matrix is τ K, so each mode decays
+  // at τω²/2. A rigid rotation from a rotated state costs nothing to first order.
+  const double mu = 2e4, lambda_lame = 6e4, lambda = lambda_lame + mu;
+  const Mat3 I = Mat3::Identity();
+  const Vec9 dD = Eigen::Map<const Vec9>(neo_hookean_deviatoric_dF(I).data());
+  const Vec9 dH = Eigen::Map<const Vec9>(neo_hookean_hydrostatic_dF(I).data());
+  const Mat9 K = mu * (dD * dD.transpose() + neo_hookean_deviatoric_value(I) * neo_hookean_deviatoric_d2F(I)) +
+                 lambda * (dH * dH.transpose() +
+                           neo_hookean_hydrostatic_value(I, neo_hookean_gamma(mu, lambda)) * neo_hookean_hydrostatic_d2F(I));
+  EXPECT_LT((strain_rate_damping_d2F(I, mu, lambda_lame) - K).norm(), 1e-10 * K.norm());
+
+  const Mat3 R = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  Mat3 F_start = R;
+  F_start(0, 1) += 0.1;  // a sheared, rotated state
+  const Mat3 W = Eigen::AngleAxisd(1e-4, Vec3(-2, 1, 0.5).normalized()).toRotationMatrix();
+  const Mat3 rotation_step = (W - I) * F_start;  // F → W Fⁿ
+  Mat3 shear_direction = Mat3::Zero();
+  shear_direction(0, 1) = shear_direction(1, 0) = 1.0;
+  const Mat3 shear_step = 1e-4 * F_start * shear_direction;
+  const double rotation = strain_rate_damping_value(F_start, rotation_step, mu, lambda_lame);
+  const double shear = strain_rate_damping_value(F_start, shear_step, mu, lambda_lame);
+  EXPECT_GT(shear, 0.0);
+  EXPECT_LT(rotation, 1e-3 * shear);  // O(θ⁴) against O(θ²)
+}
 
 Kernel distance_kernel(double rest_length) {
   return {[=](const Eigen::VectorXd& x) {

@@ -1,0 +1,150 @@
+// Gauss–Seidel over particles on the step's potential; see vertex_block_descent.hpp.
+#include "xpbd/vertex_block_descent.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+
+#include "xpbd/neo_hookean_constraints.hpp"
+#include "xpbd/strain_rate_damping.hpp"
+
+namespace rice::xpbd {
+namespace {
+
+Eigen::Map<Vec3> position(Positions& x, int i) { return Eigen::Map<Vec3>(x.data() + 3 * i); }
+Eigen::Map<const Vec3> position(const Positions& x, int i) { return Eigen::Map<const Vec3>(x.data() + 3 * i); }
+
+Mat3 deformation(const Positions& x, const NeoHookeanTet& t) {
+  const auto& id = t.particles;
+  return edge_matrix(position(x, id[0]), position(x, id[1]), position(x, id[2]), position(x, id[3])) * t.Dm_inv;
+}
+
+Vec2 constraint_values(const NeoHookeanTet& t, const Mat3& F) {
+  return {neo_hookean_deviatoric_value(F), neo_hookean_hydrostatic_value(F, neo_hookean_gamma(t.mu, t.lambda))};
+}
+
+/// Greedy colouring of the particles that have corners: each, in index order, takes the
+/// smallest colour no particle of its tets has yet.
+Coloring color_particles(const Model& model, const std::vector<int>& first, const auto& corners) {
+  const int n = model.particles.size();
+  std::vector<int> color(n, -1);
+  std::vector<char> taken;
+  int colors = 0;
+  for (int i = 0; i < n; ++i) {
+    if (first[i] == first[i + 1]) continue;
+    taken.assign(colors + 1, 0);
+    for (int c = first[i]; c < first[i + 1]; ++c)
+      for (const int j : model.neo_hookean[corners[c].tet].particles)
+        if (color[j] >= 0) taken[color[j]] = 1;
+    color[i] = static_cast<int>(std::find(taken.begin(), taken.end(), 0) - taken.begin());
+    colors = std::max(colors, color[i] + 1);
+  }
+  Coloring coloring;
+  coloring.begin.assign(colors + 1, 0);
+  for (int i = 0; i < n; ++i)
+    if (color[i] >= 0) ++coloring.begin[color[i] + 1];
+  for (int c = 0; c < colors; ++c) coloring.begin[c + 1] += coloring.begin[c];
+  coloring.order.resize(coloring.begin.back());
+  std::vector<int> next(coloring.begin.begin(), coloring.begin.end() - 1);
+  for (int i = 0; i < n; ++i)
+    if (color[i] >= 0) coloring.order[next[color[i]]++] = i;
+  return coloring;
+}
+
+}  // namespace
+
+VertexBlockDescent::VertexBlockDescent(const Model& model) {
+  const int n = model.particles.size();
+  first_corner_.assign(n + 1, 0);
+  for (const NeoHookeanTet& t : model.neo_hookean)
+    for (const int i : t.particles) ++first_corner_[i + 1];
+  for (int i = 0; i < n; ++i) first_corner_[i + 1] += first_corner_[i];
+  corners_.resize(first_corner_.back());
+  std::vector<int> next(first_corner_.begin(), first_corner_.end() - 1);
+  for (size_t e = 0; e < model.neo_hookean.size(); ++e) {
+    const NeoHookeanTet& t = model.neo_hookean[e];
+    constraint_damping_ = constraint_damping_ || t.beta_deviatoric > 0.0 || t.beta_hydrostatic > 0.0;
+    strain_rate_damping_ = strain_rate_damping_ || t.strain_rate_damping > 0.0;
+    for (int k = 0; k < 4; ++k) corners_[next[t.particles[k]]++] = {static_cast<int>(e), k};
+  }
+  coloring_ = color_particles(model, first_corner_, corners_);
+}
+
+void VertexBlockDescent::begin_step(const Model& model, const Positions& x_start, double h) {
+  h_ = h;
+  const size_t count = model.neo_hookean.size();
+  if (constraint_damping_) C_start_.resize(count);
+  if (strain_rate_damping_) F_start_.resize(count);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 256), [&](const tbb::blocked_range<size_t>& range) {
+    for (size_t e = range.begin(); e != range.end(); ++e) {
+      const NeoHookeanTet& t = model.neo_hookean[e];
+      const Mat3 F = deformation(x_start, t);
+      if (constraint_damping_) C_start_[e] = constraint_values(t, F);
+      if (strain_rate_damping_) F_start_[e] = F;
+    }
+  });
+}
+
+void VertexBlockDescent::sweep(Model& model, const Positions& y, Terms terms, bool parallel,
+                               const std::vector<char>& frozen) const {
+  const auto visit = [&](int i) {
+    if (model.particles.w[i] == 0.0 || (!frozen.empty() && frozen[i])) return;
+    solve_particle(model, y, i, terms);
+  };
+  for (int color = 0; color < coloring_.colors(); ++color) {
+    const auto members = coloring_.color(color);
+    if (!parallel) {
+      for (const int i : members) visit(i);
+      continue;
+    }
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, members.size(), 64), [&](const tbb::blocked_range<size_t>& range) {
+      for (size_t m = range.begin(); m != range.end(); ++m) visit(members[m]);
+    });
+  }
+}
+
+void VertexBlockDescent::solve_particle(Model& model, const Positions& y, int i, Terms terms) const {
+  Positions& x = model.particles.x;
+  const double inertia = 1.0 / (model.particles.w[i] * h_ * h_);  // m_i / h²
+  Vec3 gradient = inertia * (position(x, i) - position(y, i));
+  Mat3 hessian = Mat3::Zero();  // of the tets' terms; the inertia is added below
+  for (int c = first_corner_[i]; c < first_corner_[i + 1]; ++c) {
+    const NeoHookeanTet& t = model.neo_hookean[corners_[c].tet];
+    const Vec3 b = stencil_weights(t.Dm_inv, corners_[c].k);
+    const Mat3 F = deformation(x, t);
+    if (terms == Terms::kAll) {
+      // U + Ψ^C through the constraint kernels: ∂/∂C_r = k_r C_r + b_r (C_r − C_r(xⁿ)),
+      // ∂²/∂C_r² = k_r + b_r with k = 1/α, b = β/h (fem_reference/constraint_potential_form.hpp).
+      const Vec2 C = constraint_values(t, F);
+      const Vec2 k(1.0 / t.compliance_deviatoric(), 1.0 / t.compliance_hydrostatic());
+      const Vec2 damping = constraint_damping_ ? Vec2(t.beta_deviatoric / h_, t.beta_hydrostatic / h_) : Vec2::Zero();
+      const Vec2 rate = constraint_damping_ ? Vec2(C - C_start_[corners_[c].tet]) : Vec2::Zero();
+      const Vec2 force = k.cwiseProduct(C) + damping.cwiseProduct(rate);
+      const Vec3 gD = vertex_gradient(neo_hookean_deviatoric_dF(F), b);
+      const Vec3 gH = vertex_gradient(neo_hookean_hydrostatic_dF(F), b);
+      gradient += force[0] * gD + force[1] * gH;
+      // ∂²C_H/∂x_i² = 0: det(F + δbᵀ) is linear in δ (the matrix determinant lemma).
+      hessian += (k[0] + damping[0]) * gD * gD.transpose() + (k[1] + damping[1]) * gH * gH.transpose() +
+                 force[0] * vertex_hessian(neo_hookean_deviatoric_d2F(F), b);
+    }
+    if (t.strain_rate_damping > 0.0) {
+      const Mat3& F_start = F_start_[corners_[c].tet];
+      const double scale = t.strain_rate_damping * t.rest_volume / h_;  // τV/h of Ψ^E
+      gradient += scale * vertex_gradient(strain_rate_damping_dF(F_start, F - F_start, t.mu, t.lambda_lame()), b);
+      hessian += scale * strain_rate_damping_vertex_hessian(F_start, b, t.mu, t.lambda_lame());
+    }
+  }
+  Eigen::LLT<Mat3> newton(hessian + inertia * Mat3::Identity());
+  if (newton.info() != Eigen::Success) {
+    Eigen::SelfAdjointEigenSolver<Mat3> eigen;
+    eigen.computeDirect(hessian);
+    const Mat3 projected =
+        eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).asDiagonal() * eigen.eigenvectors().transpose();
+    newton.compute(projected + inertia * Mat3::Identity());
+  }
+  position(x, i) -= newton.solve(gradient);
+}
+
+}  // namespace rice::xpbd

@@ -1,0 +1,72 @@
+// Vertex block descent (Chen, Macklin et al. 2024, "Vertex Block Descent") on the Neo-Hookean
+// tets of the shared model: Gauss–Seidel over particles on the backward-Euler incremental
+// potential of one step of h,
+//
+//   E(x) = Σ_i m_i/(2h²) ‖x_i − y_i‖² + Σ_e [U_e(x) + Ψ^C_e(x) + Ψ^E_e(x)],               (1)
+//
+// y the inertial prediction, U_e = ½ Cᵀα⁻¹C − U_rest the stable Neo-Hookean pair (the same
+// constraint kernels as XPBD and the reference), Ψ^C_e = Σ_r β_r/(2h) (C_r(x) − C_r(xⁿ))² its
+// constraint Rayleigh damping as the reference writes it (fem_reference/implicit_solver.hpp),
+// Ψ^E_e the strain-rate damping (strain_rate_damping.hpp). Each particle in turn takes one
+// Newton step on E in its own three coordinates, the others held (VBD eqs. 7–9):
+//
+//   H_i Δx_i = −∇_i E,    H_i = m_i/h² I + Σ_e ∂²E_e/∂x_i².
+//
+// Particles of one colour share no tet and move in parallel; a fixed point is a stationary
+// point of E, i.e. the reference's backward-Euler step. The blocks ∂²U_e/∂x_i² are positive
+// semi-definite for this energy (μV‖b‖² I from C_D, λV (cof F b)(cof F b)ᵀ from C_H, because
+// det(F + δbᵀ) is linear in δ); only the Rayleigh term of C_D can make H_i indefinite, and
+// then H_i − m_i/h² I is projected onto the PSD cone (its eigenvalues clamped at zero).
+//
+// The solver (solver.hpp) uses this for Method::kVbd, and, with the elastic terms left out,
+// to apply strain-rate damping after XPBD's constraint iterations.
+#pragma once
+
+#include <vector>
+
+#include "xpbd/graph_coloring.hpp"
+#include "xpbd/model.hpp"
+
+namespace rice::xpbd {
+
+class VertexBlockDescent {
+ public:
+  /// Which terms of (1) a sweep minimises besides the inertia.
+  enum class Terms {
+    kAll,                    ///< U + Ψ^C + Ψ^E: the whole step
+    kStrainRateDampingOnly,  ///< Ψ^E alone: XPBD's damping pass, y its constraint solution
+  };
+
+  /// Incidence of particles and tets and the particle colouring; build again when the model's
+  /// tets change.
+  explicit VertexBlockDescent(const Model& model);
+
+  /// Records what the potential of a step from `x_start` needs: C(xⁿ) per tet for Ψ^C and Fⁿ
+  /// for Ψ^E (only where those damping terms are on).
+  void begin_step(const Model& model, const Positions& x_start, double h);
+
+  /// One Gauss–Seidel sweep over the particles of tets, colour by colour. Pinned particles
+  /// (w = 0) and those marked in `frozen` (sleeping bodies; may be empty) stay.
+  void sweep(Model& model, const Positions& y, Terms terms, bool parallel, const std::vector<char>& frozen) const;
+
+  /// Whether any tet has strain-rate damping.
+  bool has_strain_rate_damping() const { return strain_rate_damping_; }
+
+ private:
+  struct Corner {
+    int tet;
+    int k;  ///< the particle's corner in the tet, 0..3
+  };
+  /// One particle's Newton step.
+  void solve_particle(Model& model, const Positions& y, int i, Terms terms) const;
+
+  std::vector<int> first_corner_;  ///< CSR: particle i's corners are corners_[first_corner_[i] .. [i + 1])
+  std::vector<Corner> corners_;
+  Coloring coloring_;  ///< particles of tets grouped so that no two of a colour share a tet
+  std::vector<Vec2> C_start_;
+  std::vector<Mat3> F_start_;
+  double h_ = 0.0;
+  bool constraint_damping_ = false, strain_rate_damping_ = false;
+};
+
+}  // namespace rice::xpbd
