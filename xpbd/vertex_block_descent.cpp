@@ -74,6 +74,7 @@ VertexBlockDescent::VertexBlockDescent(const Model& model) {
 
 void VertexBlockDescent::begin_step(const Model& model, const Positions& x_start, double h) {
   h_ = h;
+  x_start_ = &x_start;
   const size_t count = model.neo_hookean.size();
   if (constraint_damping_) C_start_.resize(count);
   if (strain_rate_damping_) F_start_.resize(count);
@@ -103,6 +104,31 @@ void VertexBlockDescent::sweep(Model& model, const Positions& y, Terms terms, bo
       for (size_t m = range.begin(); m != range.end(); ++m) visit(members[m]);
     });
   }
+}
+
+double VertexBlockDescent::particle_energy(const Model& model, const Positions& y, int i, Terms terms,
+                                           const Vec3& xi) const {
+  const Positions& x = model.particles.x;
+  const Vec3 offset = xi - position(x, i);
+  double energy = 0.5 / (model.particles.w[i] * h_ * h_) * (xi - position(y, i)).squaredNorm();
+  for (int c = first_corner_[i]; c < first_corner_[i + 1]; ++c) {
+    const NeoHookeanTet& t = model.neo_hookean[corners_[c].tet];
+    const Mat3 F = deformation(x, t) + offset * stencil_weights(t.Dm_inv, corners_[c].k).transpose();
+    if (terms == Terms::kAll) {
+      const Vec2 C = constraint_values(t, F);
+      energy += 0.5 * (C[0] * C[0] / t.compliance_deviatoric() + C[1] * C[1] / t.compliance_hydrostatic());
+      if (constraint_damping_) {
+        const Vec2 rate = C - C_start_[corners_[c].tet];
+        energy += 0.5 / h_ * (t.beta_deviatoric * rate[0] * rate[0] + t.beta_hydrostatic * rate[1] * rate[1]);
+      }
+    }
+    if (t.strain_rate_damping > 0.0) {
+      const Mat3& F_start = F_start_[corners_[c].tet];
+      energy += t.strain_rate_damping * t.rest_volume / h_ *
+                strain_rate_damping_value(F_start, F - F_start, t.mu, t.lambda_lame());
+    }
+  }
+  return energy;
 }
 
 void VertexBlockDescent::solve_particle(Model& model, const Positions& y, int i, Terms terms) const {
@@ -144,7 +170,44 @@ void VertexBlockDescent::solve_particle(Model& model, const Positions& y, int i,
         eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).asDiagonal() * eigen.eigenvectors().transpose();
     newton.compute(projected + inertia * Mat3::Identity());
   }
-  position(x, i) -= newton.solve(gradient);
+  double depth = 0.0;
+  Vec3 step = step_on_ground(model, i, newton, gradient, depth);
+  // Backtracking: E is not convex (the Rayleigh term of C_D, large strains), and a full Newton
+  // step that raised it made the stiff cantilever of the hard cases gain energy at h = 1/4800 s
+  // with one or two sweeps. Halve until E does not rise; after eight halvings, stay.
+  const Vec3 xi = position(x, i);
+  const double energy = particle_energy(model, y, i, terms, xi);
+  int halvings = 0;
+  while (particle_energy(model, y, i, terms, xi + step) > energy) {
+    step *= 0.5;
+    if (++halvings == 8) return;
+  }
+  if (depth > 0.0) step = with_ground_friction(model, i, step, depth);
+  position(x, i) += step;
+}
+
+Vec3 VertexBlockDescent::step_on_ground(const Model& model, int i, const Eigen::LLT<Mat3>& newton,
+                                        const Vec3& gradient, double& depth) const {
+  const Vec3 free_step = -newton.solve(gradient);
+  depth = 0.0;
+  if (!model.ground) return free_step;
+  const GroundPlane& ground = *model.ground;
+  depth = ground.offset - ground.normal.dot(position(model.particles.x, i) + free_step);
+  if (depth <= 0.0) return free_step;
+  // min ½ΔᵀHΔ + gᵀΔ subject to n·(x + Δ) = d:  Δ = free_step + ν H⁻¹n, ν = depth / (nᵀH⁻¹n).
+  const Vec3 Hinv_n = newton.solve(ground.normal);
+  return free_step + (depth / ground.normal.dot(Hinv_n)) * Hinv_n;
+}
+
+Vec3 VertexBlockDescent::with_ground_friction(const Model& model, int i, const Vec3& step, double depth) const {
+  // Friction on the motion over the time step, as Solver::project_ground applies it.
+  const GroundPlane& ground = *model.ground;
+  const Vec3 moved = position(model.particles.x, i) + step - position(*x_start_, i);
+  const Vec3 tangential = moved - ground.normal.dot(moved) * ground.normal;
+  const double slip = tangential.norm();
+  if (slip < ground.static_friction * depth) return step - tangential;
+  if (slip > 0.0) return step - tangential * std::min(ground.dynamic_friction * depth / slip, 1.0);
+  return step;
 }
 
 }  // namespace rice::xpbd
