@@ -23,6 +23,7 @@
 #include "experiments/oscillator_study.hpp"
 #include "experiments/pour_scene.hpp"
 #include "experiments/pour_substep_study.hpp"
+#include "experiments/grain_substep_study.hpp"
 #include "experiments/render_command.hpp"
 #include "experiments/render_study.hpp"
 #include "experiments/water_absorption_figure.hpp"
@@ -103,6 +104,9 @@ struct CommandLine::Commands {
   CdrfStudySettings cdrf;
   std::string cdrf_out = "out/cdrf";
   CLI::App* pour_substeps_cmd = nullptr;
+  CLI::App* grain_substeps_cmd = nullptr;
+  GrainSubstepStudySettings grain_substeps;
+  std::string grain_substeps_out = "out/grain-substeps";
   PourSubstepStudySettings pour_substeps;
   std::string pour_substeps_out = "out/pour-substeps", pour_substeps_body = "rigid";
   bool pour_substeps_no_cohesion = false;
@@ -263,6 +267,23 @@ struct CommandLine::Commands {
     pour_substeps_cmd->add_option("--body", pour_substeps_body, "rigid or soft")
         ->check(CLI::IsMember({"rigid", "soft"}))->capture_default_str();
     pour_substeps_cmd->add_flag("--no-cohesion", pour_substeps_no_cohesion, "no water-content bonds");
+
+    grain_substeps_cmd = study->add_subcommand(
+        "grain-substeps", "one soft grain at rest: largest stable substep and its error, XPBD and vertex block descent");
+    grain_substeps_cmd->add_option("--out", grain_substeps_out, "output folder")->capture_default_str();
+    grain_substeps_cmd->add_option("--substeps", grain_substeps.substeps, "substep counts per 1/60 s frame")
+        ->check(number_in(1, 1e4))->capture_default_str();
+    grain_substeps_cmd->add_option("--xpbd-iterations", grain_substeps.xpbd_iterations, "XPBD iteration counts")
+        ->check(number_in(1, 1000))->capture_default_str();
+    grain_substeps_cmd->add_option("--vbd-iterations", grain_substeps.vbd_iterations,
+                                   "vertex block descent sweep counts")
+        ->check(number_in(1, 1000))->capture_default_str();
+    grain_substeps_cmd->add_option("--frames", grain_substeps.frames, "frames of 1/60 s")
+        ->check(number_in(1, 1e5))->capture_default_str();
+    grain_substeps_cmd->add_option("--young", grain_substeps.young, "Young's modulus [Pa]")
+        ->check(number_in(1, 1e12))->capture_default_str();
+    grain_substeps_cmd->add_option("--seed", grain_substeps.seed, "grain seed")->check(seed_value())
+        ->capture_default_str();
 
     stiffness_cmd = study->add_subcommand("xpbd-stiffness",
                                           "cantilever rest deflection vs iteration count, XPBD against PBD");
@@ -525,6 +546,7 @@ void CommandLine::validate() const {
   if (*c.pour_cmd) experiments::validate(c.pour_settings());
   if (*c.render_cmd) experiments::validate(c.render_settings());
   if (*c.pour_substeps_cmd) experiments::validate(c.pour_substeps_settings());
+  if (*c.grain_substeps_cmd) experiments::validate(c.grain_substeps);
 }
 
 void CommandLine::run() const {
@@ -533,6 +555,7 @@ void CommandLine::run() const {
   if (*c.cdrf_cmd) cdrf_study_command(c.cdrf, c.cdrf_out);
   if (*c.render_study_cmd) render_study_command(c.render_study, c.render_study_out);
   if (*c.pour_substeps_cmd) pour_substep_study_command(c.pour_substeps_settings(), c.pour_substeps_out);
+  if (*c.grain_substeps_cmd) grain_substep_study_command(c.grain_substeps, c.grain_substeps_out);
   if (*c.oscillator_cmd) oscillator_study_command(c.oscillator, c.oscillator_out);
   if (*c.convergence_cmd) convergence_study_command(c.convergence_settings(), c.convergence_out);
   if (*c.grains_cmd) grain_library_command(c.grain_library_settings(), c.library_out);

@@ -11,8 +11,14 @@ const char* body_model_name(BodyModel model) {
   return model == BodyModel::kNeoHookean ? "neo-hookean" : "springs";
 }
 
-xpbd::Model make_scene(Scene scene, BodyModel body, const BarSettings& bar, int resolution,
-                       double rayleigh_time) {
+const char* damping_name(Damping damping) {
+  return damping == Damping::kNone ? "none" : damping == Damping::kConstraint ? "constraint" : "strain-rate";
+}
+
+xpbd::Model make_scene(Scene scene, BodyModel body, const BarSettings& bar, int resolution, Damping damping,
+                       double tau) {
+  const double rayleigh_time = damping == Damping::kConstraint ? tau : 0.0;
+  const double strain_rate_time = damping == Damping::kStrainRate ? tau : 0.0;
   using xpbd::Vec3;
   const xpbd::TetMesh mesh = xpbd::make_box_tet_mesh(Vec3(bar.length, bar.width, bar.width),
                                                      5 * resolution, resolution, resolution);
@@ -20,7 +26,7 @@ xpbd::Model make_scene(Scene scene, BodyModel body, const BarSettings& bar, int 
   model.particles = xpbd::make_particles(mesh, bar.density);
   const xpbd::LameParameters lame = xpbd::lame_from_young_poisson(bar.young, bar.poisson);
   if (body == BodyModel::kNeoHookean) {
-    xpbd::add_neo_hookean_tets(model, mesh, lame, rayleigh_time);
+    xpbd::add_neo_hookean_tets(model, mesh, lame, rayleigh_time, strain_rate_time);
   } else {
     xpbd::add_edge_springs(model, mesh, bar.young, rayleigh_time);
     xpbd::add_tet_volumes(model, mesh, lame.lambda + 2.0 * lame.mu / 3.0, rayleigh_time);

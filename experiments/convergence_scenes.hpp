@@ -27,9 +27,16 @@ struct BarSettings {
   double twist_rate = 20.0;  ///< ω_end [rad/s] of the twisted bar's free end
 };
 
-/// The scene at `resolution` cubes across the section (5 × resolution along), with Rayleigh
-/// damping time τ (0: undamped).
-xpbd::Model make_scene(Scene scene, BodyModel body, const BarSettings& bar, int resolution,
-                       double rayleigh_time);
+/// How the damped scenes are damped: Rayleigh damping of each constraint (β = τ/α, XPBD
+/// eq. 26), or the strain-rate damping ½τĖ:𝒞:Ė (xpbd/strain_rate_damping.hpp, Neo-Hookean
+/// bodies and vertex block descent only).
+enum class Damping { kNone, kConstraint, kStrainRate };
+
+const char* damping_name(Damping damping);
+
+/// The scene at `resolution` cubes across the section (5 × resolution along), damped with
+/// time τ as `damping` says.
+xpbd::Model make_scene(Scene scene, BodyModel body, const BarSettings& bar, int resolution, Damping damping,
+                       double tau);
 
 }  // namespace rice::experiments

@@ -27,7 +27,8 @@ using xpbd::Positions;
 struct Case {
   Scene scene;
   BodyModel body;
-  double rayleigh_time;
+  Damping damping;
+  double rayleigh_time;  ///< τ of the damping; 0 when undamped
   int resolution;
   int substeps;
 };
@@ -52,7 +53,7 @@ int frame_count(const ConvergenceSettings& s) { return static_cast<int>(std::lro
 
 Reference run_reference(const ConvergenceSettings& s, const Case& c) {
   Reference ref{c, {}, {}};
-  xpbd::Model model = make_scene(c.scene, c.body, s.bar, c.resolution, c.rayleigh_time);
+  xpbd::Model model = make_scene(c.scene, c.body, s.bar, c.resolution, c.damping, c.rayleigh_time);
   ref.tets = static_cast<int>(std::max(model.neo_hookean.size(), model.volumes.size()));
   const double h = s.frame / c.substeps;
   fem::ImplicitSolver solver(model, {.time_step = h, .newton = {.tolerance = s.reference_tolerance}});
@@ -87,16 +88,27 @@ ConvergenceRun describe(const Case& c, const char* method, int tets) {
   run.method = method;
   run.resolution = c.resolution;
   run.tets = tets;
+  run.damping = damping_name(c.damping);
   run.rayleigh_time = c.rayleigh_time;
   run.substeps = c.substeps;
   return run;
 }
 
-/// The position-based variants the study compares.
-enum class Variant { kXpbd, kXpbdPrimalCorrection, kPbd };
+/// The position-based variants the study compares, and vertex block descent.
+enum class Variant { kXpbd, kXpbdPrimalCorrection, kPbd, kVbd };
 
 const char* variant_name(Variant v) {
-  return v == Variant::kXpbd ? "xpbd" : v == Variant::kXpbdPrimalCorrection ? "xpbd-primal" : "pbd";
+  switch (v) {
+    case Variant::kXpbd: return "xpbd";
+    case Variant::kXpbdPrimalCorrection: return "xpbd-primal";
+    case Variant::kPbd: return "pbd";
+    case Variant::kVbd: return "vbd";
+  }
+  return "";
+}
+
+xpbd::Method method_of(Variant v) {
+  return v == Variant::kPbd ? xpbd::Method::kPbd : v == Variant::kVbd ? xpbd::Method::kVbd : xpbd::Method::kXpbd;
 }
 
 ConvergenceRun run_position_based(const ConvergenceSettings& s, const Reference& ref, int iterations,
@@ -105,9 +117,9 @@ ConvergenceRun run_position_based(const ConvergenceSettings& s, const Reference&
   ConvergenceRun run = describe(c, variant_name(variant), ref.tets);
   run.iterations = iterations;
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-  xpbd::Model model = make_scene(c.scene, c.body, s.bar, c.resolution, c.rayleigh_time);
+  xpbd::Model model = make_scene(c.scene, c.body, s.bar, c.resolution, c.damping, c.rayleigh_time);
   xpbd::SolverSettings settings{.time_step = s.frame, .substeps = c.substeps, .iterations = iterations,
-                                .method = variant == Variant::kPbd ? xpbd::Method::kPbd : xpbd::Method::kXpbd,
+                                .method = method_of(variant),
                                 .execution = xpbd::Execution::kSerial,
                                 .primal_correction = variant == Variant::kXpbdPrimalCorrection};
   fem::TrajectoryError error;
@@ -154,7 +166,7 @@ ConvergenceRun run_position_based(const ConvergenceSettings& s, const Reference&
 /// Marks the runs that no other run of the same method and panel beats in both error and cost.
 void mark_pareto_fronts(std::vector<ConvergenceRun>& runs) {
   const auto panel = [](const ConvergenceRun& r) {
-    return std::make_tuple(r.scene, r.model, r.method, r.rayleigh_time, r.resolution);
+    return std::make_tuple(r.scene, r.model, r.method, r.damping, r.resolution);
   };
   for (ConvergenceRun& r : runs) {
     if (r.method == "reference" || r.failed) continue;
@@ -168,26 +180,33 @@ void mark_pareto_fronts(std::vector<ConvergenceRun>& runs) {
 
 std::vector<Case> reference_cases(const ConvergenceSettings& s) {
   std::vector<Case> cases;
-  for (const Scene scene : {Scene::kHangingCantilever, Scene::kTwistedBar})
-    for (const double tau : {0.0, s.rayleigh_time})
+  for (const Scene scene : {Scene::kHangingCantilever, Scene::kTwistedBar}) {
+    for (const Damping damping : {Damping::kNone, Damping::kConstraint})
       for (const int resolution : s.resolutions)
         for (const int n : resolution == s.grid_resolution ? s.substeps : s.resolution_substeps)
-          cases.push_back({scene, BodyModel::kNeoHookean, tau, resolution, n});
+          cases.push_back({scene, BodyModel::kNeoHookean, damping, damping == Damping::kNone ? 0.0 : s.rayleigh_time,
+                           resolution, n});
+    for (const int n : s.substeps)  // strain-rate damping: vertex block descent only
+      if (n <= s.max_vbd_substeps)
+        cases.push_back({scene, BodyModel::kNeoHookean, Damping::kStrainRate, s.rayleigh_time, s.grid_resolution, n});
+  }
   for (const int n : s.substeps)  // PBD's contrast: springs and volumes, undamped
-    cases.push_back({Scene::kHangingCantilever, BodyModel::kSprings, 0.0, s.grid_resolution, n});
+    cases.push_back({Scene::kHangingCantilever, BodyModel::kSprings, Damping::kNone, 0.0, s.grid_resolution, n});
   return cases;
 }
 
 void print_table(const ConvergenceSettings& s, const std::vector<ConvergenceRun>& runs,
                  const char* title, double ConvergenceRun::*figure) {
   std::printf("\n%s (resolution %d, relative to L = %g m)\n", title, s.grid_resolution, s.bar.length);
-  std::map<std::tuple<std::string, std::string, std::string, double>, std::map<int, std::map<int, double>>> tables;
+  std::map<std::tuple<std::string, std::string, std::string, std::string>, std::map<int, std::map<int, double>>>
+      tables;
   for (const ConvergenceRun& r : runs)
     if (r.resolution == s.grid_resolution && r.method != "reference")
-      tables[{r.scene, r.model, r.method, r.rayleigh_time}][r.substeps][r.iterations] = r.*figure;
+      tables[{r.scene, r.model, r.method, r.damping}][r.substeps][r.iterations] = r.*figure;
   for (const auto& [key, rows] : tables) {
-    const auto& [scene, model, method, tau] = key;
-    std::printf("%s, %s, %s, tau = %g s\n%8s", scene.c_str(), model.c_str(), method.c_str(), tau, "N \\ K");
+    const auto& [scene, model, method, damping] = key;
+    std::printf("%s, %s, %s, damping %s\n%8s", scene.c_str(), model.c_str(), method.c_str(), damping.c_str(),
+                "N \\ K");
     for (int k : s.iterations) std::printf(" %10d", k);
     std::printf("\n");
     for (const auto& [n, row] : rows) {
@@ -244,6 +263,8 @@ std::vector<ConvergenceRun> run_convergence_study(const ConvergenceSettings& s) 
         jobs.push_back({i, k, Variant::kPbd});
         continue;
       }
+      if (grid && cases[i].substeps <= s.max_vbd_substeps) jobs.push_back({i, k, Variant::kVbd});
+      if (cases[i].damping == Damping::kStrainRate) continue;  // XPBD refuses it
       jobs.push_back({i, k, Variant::kXpbd});
       if (grid) jobs.push_back({i, k, Variant::kXpbdPrimalCorrection});
     }
@@ -270,13 +291,13 @@ void convergence_study_command(const ConvergenceSettings& s, const std::filesyst
   const std::vector<ConvergenceRun> runs = run_convergence_study(s);
   CsvTable table({"scene", "model", "method", "resolution", "tets", "rayleigh_time_s", "substeps", "iterations",
                   "h_s", "wall_s_per_sim_s", "rms_error_rel", "max_frame_error_rel", "step_distance_rel",
-                  "primal_residual", "constraint_residual", "pareto", "status"});
+                  "primal_residual", "constraint_residual", "pareto", "status", "damping"});
   for (const ConvergenceRun& r : runs)
     table.add_row({r.scene, r.model, r.method, cell(r.resolution), cell(r.tets), cell(r.rayleigh_time),
                    cell(r.substeps), cell(r.iterations), cell(s.frame / r.substeps), cell(r.wall_per_sim_second),
                    cell(r.trajectory_error), cell(r.max_frame_error), cell(r.step_distance),
                    cell(r.primal_residual), cell(r.constraint_residual), cell(r.pareto ? 1 : 0),
-                   r.failed ? "failed" : "ok"});
+                   r.failed ? "failed" : "ok", r.damping});
   write_file_atomically(folder / "convergence.csv", table.text());
 
   print_table(s, runs, "Trajectory RMS error", &ConvergenceRun::trajectory_error);
@@ -285,16 +306,16 @@ void convergence_study_command(const ConvergenceSettings& s, const std::filesyst
   std::printf("\nReference cost [s per simulated second] and mean Newton iterations per step:\n");
   for (const ConvergenceRun& r : runs)
     if (r.method == "reference")
-      std::printf("  %-18s %-11s tau %-6g res %d N %3d: %9.3f s, %d it%s\n", r.scene.c_str(), r.model.c_str(),
-                  r.rayleigh_time, r.resolution, r.substeps, r.wall_per_sim_second, r.iterations,
+      std::printf("  %-18s %-11s %-11s tau %-6g res %d N %3d: %9.3f s, %d it%s\n", r.scene.c_str(),
+                  r.model.c_str(), r.damping.c_str(), r.rayleigh_time, r.resolution, r.substeps, r.wall_per_sim_second, r.iterations,
                   r.failed ? "  (FAILED or unconverged steps)" : "");
 
   const std::string grid = std::to_string(s.grid_resolution);
-  render_plot(folder, "convergence", R"(set terminal pngcairo size 1400,1000
+  render_plot(folder, "convergence", R"(set terminal pngcairo size 2000,1000
 set output 'convergence.png'
 set datafile separator ','
 set datafile missing 'nan'
-set multiplot layout 2,2
+set multiplot layout 2,3 title 'Error against cost: vertex block descent stays stable at 1 substep per frame; XPBD needs small substeps'
 set logscale xy
 set format x '10^{%L}'
 set format y '10^{%L}'
@@ -303,14 +324,16 @@ set ylabel 'RMS vertex error / length'
 set cblabel 'log2 substeps per frame'
 set key bottom left
 G = )" + grid + R"(
-sel(scene, method, damped) = strcol(1) eq scene && strcol(3) eq method && $4 == G && (damped ? $6 > 0 : $6 == 0)
+sel(scene, method, damping) = strcol(1) eq scene && strcol(3) eq method && $4 == G && strcol(18) eq damping
 do for [scene in 'hanging-cantilever twisted-bar'] {
-  do for [damped = 0:1] {
-    set title sprintf('%s, %s', scene, damped ? 'Rayleigh damping' : 'no damping')
-    plot 'convergence.csv' using (sel(scene, 'xpbd', damped) ? $10 : 1/0):11:(log($7)/log(2)) with points pt 7 ps 1.2 palette title 'XPBD (N, K grid)', \
-         '' using (sel(scene, 'xpbd', damped) && $16 == 1 ? $10 : 1/0):11 with points pt 4 ps 2.2 lw 2 lc rgb 'black' title 'XPBD Pareto front', \
-         '' using (sel(scene, 'xpbd-primal', damped) ? $10 : 1/0):11 with points pt 9 ps 1.4 lc rgb 'dark-green' title 'XPBD + primal correction', \
-         '' using (sel(scene, 'pbd', damped) ? $10 : 1/0):11 with points pt 6 ps 1.2 lc rgb 'red' title 'PBD (springs, vs its reference)'
+  do for [damping in 'none constraint strain-rate'] {
+    set title sprintf('%s, damping: %s', scene, damping)
+    plot 'convergence.csv' using (sel(scene, 'xpbd', damping) ? $10 : 1/0):11:(log($7)/log(2)) with points pt 7 ps 1.2 palette title 'XPBD (N, K grid)', \
+         '' using (sel(scene, 'xpbd', damping) && $16 == 1 ? $10 : 1/0):11 with points pt 4 ps 2.2 lw 2 lc rgb 'black' title 'XPBD Pareto front', \
+         '' using (sel(scene, 'xpbd-primal', damping) ? $10 : 1/0):11 with points pt 9 ps 1.4 lc rgb 'dark-green' title 'XPBD + primal correction', \
+         '' using (sel(scene, 'vbd', damping) ? $10 : 1/0):11:(log($7)/log(2)) with points pt 5 ps 1.2 palette title 'vertex block descent (squares)', \
+         '' using (sel(scene, 'vbd', damping) && $16 == 1 ? $10 : 1/0):11 with points pt 6 ps 2.4 lw 2 lc rgb 'blue' title 'VBD Pareto front', \
+         '' using (sel(scene, 'pbd', damping) ? $10 : 1/0):11 with points pt 6 ps 1.2 lc rgb 'red' title 'PBD (springs, vs its reference)'
   }
 }
 unset multiplot
@@ -336,7 +359,7 @@ do for [scene in 'hanging-cantilever twisted-bar'] {
       list += std::to_string(r);
     }
     return list;
-  }() + R"('] 'convergence.csv' using (strcol(1) eq scene && strcol(3) eq 'xpbd' && $4 == r+0 && $6 == 0 ? $10 : 1/0):11 with points pt 7 ps 1.2 title sprintf('%s cells across', r)
+  }() + R"('] 'convergence.csv' using (strcol(1) eq scene && strcol(3) eq 'xpbd' && $4 == r+0 && strcol(18) eq 'none' ? $10 : 1/0):11 with points pt 7 ps 1.2 title sprintf('%s cells across', r)
 }
 unset multiplot
 )");

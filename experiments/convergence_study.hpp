@@ -5,8 +5,10 @@
 //  1. reference trajectories: backward Euler by Newton at h = frame / N for every N, solved to
 //     a tight relative gradient tolerance;
 //  2. XPBD over N substeps per frame × K iterations per substep, with and without the
-//     primal-residual correction (xpbd/solver.hpp; method "xpbd-primal"), and PBD on a
-//     springs model against its own reference, for contrast. Error: RMS vertex distance to the reference
+//     primal-residual correction (xpbd/solver.hpp; method "xpbd-primal"), vertex block
+//     descent (method "vbd", N ≤ 16) on the same grid, and PBD on a springs model against its
+//     own reference, for contrast. Damped scenes come twice: with each constraint's Rayleigh
+//     damping (all methods) and with the strain-rate damping (vertex block descent only). Error: RMS vertex distance to the reference
 //     over the frames of the trajectory, relative to the bar's length. Cost: wall time per
 //     simulated second (runs execute side by side, one per core, each single-threaded);
 //  3. one-step figures from reference states every few frames: the distance of XPBD's step to
@@ -28,12 +30,15 @@ namespace rice::experiments {
 
 struct ConvergenceSettings {
   BarSettings bar;
-  double rayleigh_time = 2e-3;  ///< τ of the damped runs [s] (β = τ/α per constraint)
+  double rayleigh_time = 2e-3;  ///< τ of the damped runs [s], for both kinds of damping
   double duration = 0.5;        ///< simulated time [s]
   double frame = 1.0 / 60.0;    ///< [s]
   std::vector<int> substeps{1, 2, 4, 8, 16, 32, 64};
   std::vector<int> iterations{1, 2, 5, 10, 20, 50};
   std::vector<int> resolutions{1, 2, 4};  ///< cubes across the section (5× along)
+  /// Vertex block descent runs at N ≤ this only (it is for large steps; at N = 64 and K = 50 a
+  /// run would take tens of seconds).
+  int max_vbd_substeps = 16;
   int grid_resolution = 2;                ///< the full (N, K) grid runs at this resolution
   std::vector<int> resolution_substeps{4, 16};      ///< (N, K) subset at the other resolutions
   std::vector<int> resolution_iterations{5, 20};
@@ -47,9 +52,10 @@ struct ConvergenceSettings {
 
 /// One row of convergence.csv.
 struct ConvergenceRun {
-  std::string scene, model, method;  ///< "xpbd", "xpbd-primal", "pbd" or "reference"
+  std::string scene, model, method;  ///< "xpbd", "xpbd-primal", "pbd", "vbd" or "reference"
+  std::string damping;               ///< "none", "constraint" or "strain-rate" (damping_name)
   int resolution = 0, tets = 0;
-  double rayleigh_time = 0.0;
+  double rayleigh_time = 0.0;        ///< τ of the damping [s]
   int substeps = 0, iterations = 0;  ///< iterations: K, or mean Newton iterations per step
   double wall_per_sim_second = 0.0;
   bool failed = false;               ///< the run threw (non-finite state); errors are NaN

@@ -61,6 +61,11 @@ Solver::Solver(Model& model, const SolverSettings& settings) : model_(model), se
   if (settings.method == Method::kVbd && (!model.distances.empty() || !model.volumes.empty()))
     throw std::invalid_argument("Solver: vertex block descent solves Neo-Hookean tets only; this model has "
                                 "springs or tet volumes (use Method::kXpbd)");
+  const bool strain_rate_damping = std::any_of(model.neo_hookean.begin(), model.neo_hookean.end(),
+                                               [](const NeoHookeanTet& t) { return t.strain_rate_damping > 0.0; });
+  if (settings.method != Method::kVbd && strain_rate_damping)
+    throw std::invalid_argument("Solver: strain-rate damping is solved by vertex block descent only (use "
+                                "Method::kVbd); XPBD damps through each constraint's β");
   if (settings.method != Method::kXpbd && settings.primal_correction)
     throw std::invalid_argument("Solver: the primal-residual correction belongs to Method::kXpbd");
   for (const Attachment& a : model.attachments)
@@ -71,9 +76,7 @@ Solver::Solver(Model& model, const SolverSettings& settings) : model_(model), se
   coloring_distance_ = color_constraints<2>(model.distances, p.size());
   coloring_volume_ = color_constraints<4>(model.volumes, p.size());
   coloring_neo_hookean_ = color_constraints<4>(model.neo_hookean, p.size());
-  const bool strain_rate_damping = std::any_of(model.neo_hookean.begin(), model.neo_hookean.end(),
-                                               [](const NeoHookeanTet& t) { return t.strain_rate_damping > 0.0; });
-  if (settings.method == Method::kVbd || strain_rate_damping) vbd_ = std::make_unique<VertexBlockDescent>(model);
+  if (settings.method == Method::kVbd) vbd_ = std::make_unique<VertexBlockDescent>(model);
 }
 
 Solver::~Solver() = default;
@@ -131,10 +134,7 @@ void Solver::substep(double h, bool end_of_interval) {
     impulse_neo_hookean_.assign(model_.neo_hookean.size(), Eigen::Matrix<double, 3, 4>::Zero());
   lambda_attachment_.assign(model_.attachments.size(), Vec3::Zero());
   if (settings_.diagnostics) x_predicted_ = model_.particles.x;
-  if (settings_.method == Method::kVbd)
-    start_vertex_block_descent(h);
-  else if (vbd_)
-    vbd_->begin_step(model_, x_previous_, h);
+  if (settings_.method == Method::kVbd) start_vertex_block_descent(h);
   if (contacts_) {
     auto clock = std::chrono::steady_clock::now();
     contacts_->begin_substep(time() + substep_ * h, h, x_previous_);
@@ -144,7 +144,6 @@ void Solver::substep(double h, bool end_of_interval) {
     iterate(h);
     if (contacts_) contacts_->project(x_previous_);
   }
-  if (settings_.method != Method::kVbd && vbd_) apply_strain_rate_damping();
   Particles& p = model_.particles;
   p.v = (p.x - x_previous_) / h;
   for (RigidBody& body : model_.rigid_bodies) update_velocities(body, h);
@@ -199,14 +198,6 @@ void Solver::start_vertex_block_descent(double h) {
   v_previous_ = p.v.rowwise() - h * model_.gravity.transpose();
 }
 
-void Solver::apply_strain_rate_damping() {
-  const Positions constrained = model_.particles.x;  // x*
-  vbd_->sweep(model_, constrained, VertexBlockDescent::Terms::kStrainRateDampingOnly,
-              settings_.execution == Execution::kParallel, asleep_particle_);
-  if (model_.ground) project_ground();
-  if (contacts_) contacts_->project(x_previous_);
-}
-
 void Solver::mark_sleeping() {
   asleep_particle_.assign(model_.particles.size(), 0);
   asleep_rigid_.assign(model_.rigid_bodies.size(), 0);
@@ -237,8 +228,7 @@ void Solver::for_each_constraint(const Coloring& coloring, Project&& project) {
 
 void Solver::iterate(double h) {
   if (settings_.method == Method::kVbd)
-    vbd_->sweep(model_, y_, VertexBlockDescent::Terms::kAll, settings_.execution == Execution::kParallel,
-                asleep_particle_);
+    vbd_->sweep(model_, y_, settings_.execution == Execution::kParallel, asleep_particle_);
   else
     for_each_constraint(coloring_neo_hookean_, [&](int c) { project_neo_hookean(c, h); });
   for_each_constraint(coloring_volume_, [&](int c) { project_volume(c, h); });

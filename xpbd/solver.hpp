@@ -5,11 +5,12 @@
 // (distance_constraint.hpp, tet_volume_constraint.hpp, neo_hookean_constraints.hpp); this
 // class owns the bookkeeping: multipliers, colouring, diagnostics.
 //
-// Strain-rate damping (strain_rate_damping.hpp) is part of the potential under Method::kVbd;
-// under Method::kXpbd it is applied after the K iterations of each substep by one sweep of
-// vertex block descent on the damping term alone (operator splitting: the constraint solve
-// gives x*, then x minimises Σ m/(2h²)‖x − x*‖² + Ψ^E(x)), followed by one more contact
-// projection. What a model leaves off costs nothing.
+// Strain-rate damping (strain_rate_damping.hpp) is part of the step's potential under
+// Method::kVbd, and the other methods refuse a model that has it. (Applied after XPBD's
+// constraint iterations by one damping sweep, operator splitting, it made a bent bar gain
+// energy until it blew up at τ = 10 h: the sweep strains the elements and nothing corrects it
+// within the substep. Written as a compliant per-tet constraint on the strain increment it
+// would fit XPBD; not done.)
 //
 // The solver keeps a reference to the model and colours its constraints once, at
 // construction: build a new solver after adding or removing constraints.
@@ -122,7 +123,6 @@ class Solver {
   /// Chen et al. 2024 (§3.6): gravity's share of h² g that the particle's last acceleration
   /// showed, so a resting body is not pushed into what holds it.
   void start_vertex_block_descent(double h);
-  void apply_strain_rate_damping();
   /// Per particle and per rigid body: 1 when its body sleeps (sleeping.hpp); empty when
   /// sleeping is off.
   void mark_sleeping();
@@ -150,7 +150,7 @@ class Solver {
   std::vector<Eigen::Matrix<double, 3, 4>> impulse_neo_hookean_;
   std::vector<Vec3> lambda_attachment_;
   std::unique_ptr<ContactSolver> contacts_;
-  std::unique_ptr<VertexBlockDescent> vbd_;  ///< Method::kVbd, or strain-rate damping under XPBD
+  std::unique_ptr<VertexBlockDescent> vbd_;  ///< Method::kVbd
   Positions y_;                              ///< Method::kVbd: the substep's inertial prediction
   Positions v_previous_;                     ///< Method::kVbd: velocities at the last substep's start
   std::vector<char> asleep_particle_, asleep_rigid_;

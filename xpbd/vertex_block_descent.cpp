@@ -88,11 +88,11 @@ void VertexBlockDescent::begin_step(const Model& model, const Positions& x_start
   });
 }
 
-void VertexBlockDescent::sweep(Model& model, const Positions& y, Terms terms, bool parallel,
+void VertexBlockDescent::sweep(Model& model, const Positions& y, bool parallel,
                                const std::vector<char>& frozen) const {
   const auto visit = [&](int i) {
     if (model.particles.w[i] == 0.0 || (!frozen.empty() && frozen[i])) return;
-    solve_particle(model, y, i, terms);
+    solve_particle(model, y, i);
   };
   for (int color = 0; color < coloring_.colors(); ++color) {
     const auto members = coloring_.color(color);
@@ -106,21 +106,18 @@ void VertexBlockDescent::sweep(Model& model, const Positions& y, Terms terms, bo
   }
 }
 
-double VertexBlockDescent::particle_energy(const Model& model, const Positions& y, int i, Terms terms,
-                                           const Vec3& xi) const {
+double VertexBlockDescent::particle_energy(const Model& model, const Positions& y, int i, const Vec3& xi) const {
   const Positions& x = model.particles.x;
   const Vec3 offset = xi - position(x, i);
   double energy = 0.5 / (model.particles.w[i] * h_ * h_) * (xi - position(y, i)).squaredNorm();
   for (int c = first_corner_[i]; c < first_corner_[i + 1]; ++c) {
     const NeoHookeanTet& t = model.neo_hookean[corners_[c].tet];
     const Mat3 F = deformation(x, t) + offset * stencil_weights(t.Dm_inv, corners_[c].k).transpose();
-    if (terms == Terms::kAll) {
-      const Vec2 C = constraint_values(t, F);
-      energy += 0.5 * (C[0] * C[0] / t.compliance_deviatoric() + C[1] * C[1] / t.compliance_hydrostatic());
-      if (constraint_damping_) {
-        const Vec2 rate = C - C_start_[corners_[c].tet];
-        energy += 0.5 / h_ * (t.beta_deviatoric * rate[0] * rate[0] + t.beta_hydrostatic * rate[1] * rate[1]);
-      }
+    const Vec2 C = constraint_values(t, F);
+    energy += 0.5 * (C[0] * C[0] / t.compliance_deviatoric() + C[1] * C[1] / t.compliance_hydrostatic());
+    if (constraint_damping_) {
+      const Vec2 rate = C - C_start_[corners_[c].tet];
+      energy += 0.5 / h_ * (t.beta_deviatoric * rate[0] * rate[0] + t.beta_hydrostatic * rate[1] * rate[1]);
     }
     if (t.strain_rate_damping > 0.0) {
       const Mat3& F_start = F_start_[corners_[c].tet];
@@ -131,7 +128,7 @@ double VertexBlockDescent::particle_energy(const Model& model, const Positions& 
   return energy;
 }
 
-void VertexBlockDescent::solve_particle(Model& model, const Positions& y, int i, Terms terms) const {
+void VertexBlockDescent::solve_particle(Model& model, const Positions& y, int i) const {
   Positions& x = model.particles.x;
   const double inertia = 1.0 / (model.particles.w[i] * h_ * h_);  // m_i / h²
   Vec3 gradient = inertia * (position(x, i) - position(y, i));
@@ -140,21 +137,19 @@ void VertexBlockDescent::solve_particle(Model& model, const Positions& y, int i,
     const NeoHookeanTet& t = model.neo_hookean[corners_[c].tet];
     const Vec3 b = stencil_weights(t.Dm_inv, corners_[c].k);
     const Mat3 F = deformation(x, t);
-    if (terms == Terms::kAll) {
-      // U + Ψ^C through the constraint kernels: ∂/∂C_r = k_r C_r + b_r (C_r − C_r(xⁿ)),
-      // ∂²/∂C_r² = k_r + b_r with k = 1/α, b = β/h (fem_reference/constraint_potential_form.hpp).
-      const Vec2 C = constraint_values(t, F);
-      const Vec2 k(1.0 / t.compliance_deviatoric(), 1.0 / t.compliance_hydrostatic());
-      const Vec2 damping = constraint_damping_ ? Vec2(t.beta_deviatoric / h_, t.beta_hydrostatic / h_) : Vec2::Zero();
-      const Vec2 rate = constraint_damping_ ? Vec2(C - C_start_[corners_[c].tet]) : Vec2::Zero();
-      const Vec2 force = k.cwiseProduct(C) + damping.cwiseProduct(rate);
-      const Vec3 gD = vertex_gradient(neo_hookean_deviatoric_dF(F), b);
-      const Vec3 gH = vertex_gradient(neo_hookean_hydrostatic_dF(F), b);
-      gradient += force[0] * gD + force[1] * gH;
-      // ∂²C_H/∂x_i² = 0: det(F + δbᵀ) is linear in δ (the matrix determinant lemma).
-      hessian += (k[0] + damping[0]) * gD * gD.transpose() + (k[1] + damping[1]) * gH * gH.transpose() +
-                 force[0] * vertex_hessian(neo_hookean_deviatoric_d2F(F), b);
-    }
+    // U + Ψ^C through the constraint kernels: ∂/∂C_r = k_r C_r + b_r (C_r − C_r(xⁿ)),
+    // ∂²/∂C_r² = k_r + b_r with k = 1/α, b = β/h (fem_reference/constraint_potential_form.hpp).
+    const Vec2 C = constraint_values(t, F);
+    const Vec2 k(1.0 / t.compliance_deviatoric(), 1.0 / t.compliance_hydrostatic());
+    const Vec2 damping = constraint_damping_ ? Vec2(t.beta_deviatoric / h_, t.beta_hydrostatic / h_) : Vec2::Zero();
+    const Vec2 rate = constraint_damping_ ? Vec2(C - C_start_[corners_[c].tet]) : Vec2::Zero();
+    const Vec2 force = k.cwiseProduct(C) + damping.cwiseProduct(rate);
+    const Vec3 gD = vertex_gradient(neo_hookean_deviatoric_dF(F), b);
+    const Vec3 gH = vertex_gradient(neo_hookean_hydrostatic_dF(F), b);
+    gradient += force[0] * gD + force[1] * gH;
+    // ∂²C_H/∂x_i² = 0: det(F + δbᵀ) is linear in δ (the matrix determinant lemma).
+    hessian += (k[0] + damping[0]) * gD * gD.transpose() + (k[1] + damping[1]) * gH * gH.transpose() +
+               force[0] * vertex_hessian(neo_hookean_deviatoric_d2F(F), b);
     if (t.strain_rate_damping > 0.0) {
       const Mat3& F_start = F_start_[corners_[c].tet];
       const double scale = t.strain_rate_damping * t.rest_volume / h_;  // τV/h of Ψ^E
@@ -172,13 +167,12 @@ void VertexBlockDescent::solve_particle(Model& model, const Positions& y, int i,
   }
   double depth = 0.0;
   Vec3 step = step_on_ground(model, i, newton, gradient, depth);
-  // Backtracking: E is not convex (the Rayleigh term of C_D, large strains), and a full Newton
-  // step that raised it made the stiff cantilever of the hard cases gain energy at h = 1/4800 s
-  // with one or two sweeps. Halve until E does not rise; after eight halvings, stay.
+  // Backtracking: E is not convex (the Rayleigh term of C_D, large strains), so a full
+  // Newton step can raise it. Halve until it does not; after eight halvings, stay.
   const Vec3 xi = position(x, i);
-  const double energy = particle_energy(model, y, i, terms, xi);
+  const double energy = particle_energy(model, y, i, xi);
   int halvings = 0;
-  while (particle_energy(model, y, i, terms, xi + step) > energy) {
+  while (particle_energy(model, y, i, xi + step) > energy) {
     step *= 0.5;
     if (++halvings == 8) return;
   }

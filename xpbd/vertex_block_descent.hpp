@@ -27,8 +27,7 @@
 // later particles had already answered, and the sweeps' fixed point would not be the rest
 // state (a grain resting at h = 1/60 s stood 10% taller with 20 sweeps).
 //
-// The solver (solver.hpp) uses this for Method::kVbd, and, with the elastic terms left out,
-// to apply strain-rate damping after XPBD's constraint iterations.
+// The solver (solver.hpp) runs K sweeps per substep for Method::kVbd.
 #pragma once
 
 #include <Eigen/Cholesky>
@@ -41,12 +40,6 @@ namespace rice::xpbd {
 
 class VertexBlockDescent {
  public:
-  /// Which terms of (1) a sweep minimises besides the inertia.
-  enum class Terms {
-    kAll,                    ///< U + Ψ^C + Ψ^E: the whole step
-    kStrainRateDampingOnly,  ///< Ψ^E alone: XPBD's damping pass, y its constraint solution
-  };
-
   /// Incidence of particles and tets and the particle colouring; build again when the model's
   /// tets change.
   explicit VertexBlockDescent(const Model& model);
@@ -57,7 +50,7 @@ class VertexBlockDescent {
 
   /// One Gauss–Seidel sweep over the particles of tets, colour by colour. Pinned particles
   /// (w = 0) and those marked in `frozen` (sleeping bodies; may be empty) stay.
-  void sweep(Model& model, const Positions& y, Terms terms, bool parallel, const std::vector<char>& frozen) const;
+  void sweep(Model& model, const Positions& y, bool parallel, const std::vector<char>& frozen) const;
 
   /// Whether any tet has strain-rate damping.
   bool has_strain_rate_damping() const { return strain_rate_damping_; }
@@ -68,9 +61,9 @@ class VertexBlockDescent {
     int k;  ///< the particle's corner in the tet, 0..3
   };
   /// One particle's Newton step.
-  void solve_particle(Model& model, const Positions& y, int i, Terms terms) const;
+  void solve_particle(Model& model, const Positions& y, int i) const;
   /// The terms of E that involve particle i, with x_i at `xi` (up to constants).
-  double particle_energy(const Model& model, const Positions& y, int i, Terms terms, const Vec3& xi) const;
+  double particle_energy(const Model& model, const Positions& y, int i, const Vec3& xi) const;
   /// The Newton step Δ = −H⁻¹g of particle i, or, when that ends below the ground plane, the
   /// minimiser of the same quadratic on the plane; `depth` is how far below it would have ended.
   Vec3 step_on_ground(const Model& model, int i, const Eigen::LLT<Mat3>& newton, const Vec3& gradient,

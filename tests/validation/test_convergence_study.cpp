@@ -2,7 +2,8 @@
 // and iterations grow; from one state, more iterations bring its step closer to Newton's until
 // it reaches its own fixed point, which stays off Newton's step (the primal-residual gap): its
 // constraint residual vanishes there while its primal residual does not. Every reference solve
-// converges and each panel has a Pareto front.
+// converges and each panel has a Pareto front. Vertex block descent, converged, is the
+// reference's step.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -55,6 +56,18 @@ TEST(ConvergenceStudy, XpbdApproachesTheReferenceWithMoreWork) {
     }
   }
   EXPECT_TRUE(std::any_of(runs.begin(), runs.end(), [](const ConvergenceRun& r) { return r.method == "pbd"; }));
+  // Vertex block descent minimises the reference's own step potential: converged, its step
+  // is Newton's (XPBD's stays off it, above), for every kind of damping.
+  for (const std::string damping : {"none", "constraint", "strain-rate"}) {
+    for (const std::string scene : {"hanging-cantilever", "twisted-bar"}) {
+      const auto vbd = std::find_if(runs.begin(), runs.end(), [&](const ConvergenceRun& r) {
+        return r.scene == scene && r.method == "vbd" && r.damping == damping && r.substeps == 16 && r.iterations == 50;
+      });
+      ASSERT_NE(vbd, runs.end()) << scene << " " << damping;
+      EXPECT_LT(vbd->step_distance, 1e-9) << scene << " " << damping;
+      EXPECT_LT(vbd->trajectory_error, 1e-6) << scene << " " << damping;
+    }
+  }
 }
 
 TEST(ConvergenceStudy, RejectsAGridResolutionOutsideTheResolutions) {

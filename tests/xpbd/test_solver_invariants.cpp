@@ -20,6 +20,7 @@ namespace {
 using testing::neo_hookean_block;
 using testing::neo_hookean_cantilever;
 using testing::rotate;
+using testing::spring_chain;
 
 const Mat3 kRotation =
     Eigen::AngleAxisd(0.7, Vec3(1.0, 2.0, -0.5).normalized()).toRotationMatrix();
@@ -213,6 +214,13 @@ TEST(Errors, BadSettingsAreRejected) {
   EXPECT_THROW(Solver(model, {.time_step = -1.0}), std::invalid_argument);
   EXPECT_THROW(Solver(model, {.method = Method::kPbd}), std::invalid_argument);
   EXPECT_THROW(Solver(model, {.pbd_stiffness = 1.5}), std::invalid_argument);
+  EXPECT_THROW(Solver(model, {.method = Method::kVbd, .primal_correction = true}), std::invalid_argument);
+  Model springs = spring_chain(3, 1e-6, 1.0);
+  EXPECT_THROW(Solver(springs, {.method = Method::kVbd}), std::invalid_argument);
+  // Strain-rate damping is vertex block descent's (solver.hpp).
+  model.neo_hookean[0].strain_rate_damping = 1e-3;
+  EXPECT_THROW(Solver(model, {}), std::invalid_argument);
+  EXPECT_NO_THROW(Solver(model, {.method = Method::kVbd}));
 }
 
 }  // namespace
