@@ -1,7 +1,7 @@
 // Vertex block descent (xpbd/vertex_block_descent.hpp) against the reference solver: both
 // minimise the same backward-Euler potential, so a converged VBD step is the Newton step, with
-// and without either kind of damping; and XPBD's strain-rate damping pass converges to it
-// as the substep shrinks.
+// and without either kind of damping. A grain-sized body rests on the ground at steps far
+// past the wave-crossing time.
 #include <gtest/gtest.h>
 
 #include "fem_reference/implicit_solver.hpp"
@@ -58,6 +58,39 @@ INSTANTIATE_TEST_SUITE_P(Damping, VertexBlockDescentStep,
                          ::testing::Values(Damping{"none", 0.0, 0.0}, Damping{"constraint", 2e-3, 0.0},
                                            Damping{"strain_rate", 0.0, 5e-3}, Damping{"both", 2e-3, 5e-3}),
                          [](const auto& info) { return std::string(info.param.name); });
+
+class GrainSizedBodyAtLargeSteps : public ::testing::TestWithParam<double> {};
+
+TEST_P(GrainSizedBodyAtLargeSteps, RestsOnTheGroundWithVertexBlockDescent) {
+  // A 7 × 3 × 2 mm body (E = 100 kPa, the size of a grain) lying on the ground, stepped 1000
+  // times with h = 1/600 s: 24 times the 7e-5 s that plain XPBD needs on the grains' meshes
+  // (README "Known limits"). After settling under its weight it must not
+  // move, keep its height and not sink. (`rice study grain-substeps` runs a procedural grain.)
+  const xpbd::TetMesh mesh = xpbd::make_box_tet_mesh(Vec3(7e-3, 3e-3, 2e-3), 4, 2, 1);
+  xpbd::Model model;
+  model.particles = xpbd::make_particles(mesh, 1100.0);
+  xpbd::add_neo_hookean_tets(model, mesh, xpbd::lame_from_young_poisson(1e5, 0.3), 0.0, 2e-3);
+  model.ground = xpbd::GroundPlane{.static_friction = 0.5, .dynamic_friction = 0.4};
+  const double height = model.particles.x.col(2).maxCoeff();
+  xpbd::Solver solver(model, {.time_step = GetParam(), .iterations = 20, .method = xpbd::Method::kVbd});
+  for (int step = 0; step < 100; ++step) solver.step();
+  const xpbd::Positions settled = model.particles.x;
+  double fastest = 0.0;
+  for (int step = 100; step < 1000; ++step) {
+    solver.step();
+    fastest = std::max(fastest, model.particles.v.rowwise().norm().maxCoeff());
+  }
+  EXPECT_LT(fastest, 1e-6);                                                     // m/s
+  EXPECT_LT((model.particles.x - settled).rowwise().norm().maxCoeff(), 1e-7);  // m
+  EXPECT_NEAR(model.particles.x.col(2).maxCoeff(), height, 0.01 * height);
+  EXPECT_GT(model.particles.x.col(2).minCoeff(), -1e-12);
+  EXPECT_GT(xpbd::tet_volumes(model.particles.x, mesh.T).minCoeff(), 0.0);
+}
+
+// At h = 1/60 s this body creeps along the ground at ~3.6 mm/s after settling (measured, both
+// compilers), so that step is not tested yet: README "Known limits".
+INSTANTIATE_TEST_SUITE_P(Steps, GrainSizedBodyAtLargeSteps, ::testing::Values(1.0 / 600.0),
+                         [](const auto&) { return std::string("h_1_600"); });
 
 }  // namespace
 }  // namespace rice
