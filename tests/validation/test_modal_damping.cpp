@@ -47,7 +47,7 @@ xpbd::Model loaded_bar(Load load, double tau) {
     const Vec3 force = load == Load::kBend ? Vec3(0.0, 0.0, -5e-3) : Vec3(Vec3::UnitX().cross(arm) * 0.5);
     model.external_forces.row(i) = force.transpose();
   }
-  fem::ImplicitSolver(model, {.time_step = 1e-3}).solve_static();
+  fem::ImplicitSolver(model, {.time_step = 1e-3, .newton = {}}).solve_static();
   model.external_forces.resize(0, 3);
   return model;
 }
@@ -81,7 +81,7 @@ Decay measure(Load load, Integrator integrator, double tau, double h, double dur
   std::unique_ptr<fem::ImplicitSolver> reference;
   std::unique_ptr<xpbd::Solver> solver;
   if (integrator == Integrator::kReference) {
-    reference = std::make_unique<fem::ImplicitSolver>(model, fem::ImplicitSettings{.time_step = h});
+    reference = std::make_unique<fem::ImplicitSolver>(model, fem::ImplicitSettings{.time_step = h, .newton = {}});
     step = [&] { reference->step(); };
   } else {
     solver = std::make_unique<xpbd::Solver>(
