@@ -157,51 +157,56 @@ void VertexBlockDescent::solve_particle(Model& model, const Positions& y, int i)
       hessian += scale * strain_rate_damping_vertex_hessian(F_start, b, t.mu, t.lambda_lame());
     }
   }
-  Eigen::LLT<Mat3> newton(hessian + inertia * Mat3::Identity());
+  Mat3 system = hessian + inertia * Mat3::Identity();
+  Eigen::LLT<Mat3> newton(system);
   if (newton.info() != Eigen::Success) {
     Eigen::SelfAdjointEigenSolver<Mat3> eigen;
     eigen.computeDirect(hessian);
-    const Mat3 projected =
-        eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).asDiagonal() * eigen.eigenvectors().transpose();
-    newton.compute(projected + inertia * Mat3::Identity());
+    system = eigen.eigenvectors() * eigen.eigenvalues().cwiseMax(0.0).asDiagonal() * eigen.eigenvectors().transpose() +
+             inertia * Mat3::Identity();
+    newton.compute(system);
   }
-  double depth = 0.0;
-  Vec3 step = step_on_ground(model, i, newton, gradient, depth);
+  const Vec3 xi = position(x, i);
+  Vec3 step = -newton.solve(gradient);
+  if (model.ground && model.ground->normal.dot(xi + step) < model.ground->offset) {
+    position(x, i) += ground_contact_step(*model.ground, xi, position(*x_start_, i), system, newton, gradient);
+    return;
+  }
   // Backtracking: E is not convex (the Rayleigh term of C_D, large strains), so a full
   // Newton step can raise it. Halve until it does not; after eight halvings, stay.
-  const Vec3 xi = position(x, i);
   const double energy = particle_energy(model, y, i, xi);
   int halvings = 0;
   while (particle_energy(model, y, i, xi + step) > energy) {
     step *= 0.5;
     if (++halvings == 8) return;
   }
-  if (depth > 0.0) step = with_ground_friction(model, i, step, depth);
   position(x, i) += step;
 }
 
-Vec3 VertexBlockDescent::step_on_ground(const Model& model, int i, const Eigen::LLT<Mat3>& newton,
-                                        const Vec3& gradient, double& depth) const {
-  const Vec3 free_step = -newton.solve(gradient);
-  depth = 0.0;
-  if (!model.ground) return free_step;
-  const GroundPlane& ground = *model.ground;
-  depth = ground.offset - ground.normal.dot(position(model.particles.x, i) + free_step);
-  if (depth <= 0.0) return free_step;
-  // min ½ΔᵀHΔ + gᵀΔ subject to n·(x + Δ) = d:  Δ = free_step + ν H⁻¹n, ν = depth / (nᵀH⁻¹n).
-  const Vec3 Hinv_n = newton.solve(ground.normal);
-  return free_step + (depth / ground.normal.dot(Hinv_n)) * Hinv_n;
-}
-
-Vec3 VertexBlockDescent::with_ground_friction(const Model& model, int i, const Vec3& step, double depth) const {
-  // Friction on the motion over the time step, as Solver::project_ground applies it.
-  const GroundPlane& ground = *model.ground;
-  const Vec3 moved = position(model.particles.x, i) + step - position(*x_start_, i);
-  const Vec3 tangential = moved - ground.normal.dot(moved) * ground.normal;
-  const double slip = tangential.norm();
-  if (slip < ground.static_friction * depth) return step - tangential;
-  if (slip > 0.0) return step - tangential * std::min(ground.dynamic_friction * depth / slip, 1.0);
-  return step;
+Vec3 VertexBlockDescent::ground_contact_step(const GroundPlane& ground, const Vec3& x, const Vec3& x_start,
+                                             const Mat3& H, const Eigen::LLT<Mat3>& newton, const Vec3& g) {
+  const Vec3& n = ground.normal;
+  const Vec3 Hinv_n = newton.solve(n);
+  // The minimiser of q − Fᵀ Δ on the plane, F a tangential force: Δ = Δ_free + ν H⁻¹n with
+  // ν = depth / (nᵀH⁻¹n) the normal force that holds it there.
+  const auto on_plane = [&](const Vec3& force, double& normal_force) {
+    const Vec3 free_step = -newton.solve(g - force);
+    normal_force = std::max(ground.offset - n.dot(x + free_step), 0.0) / n.dot(Hinv_n);
+    return Vec3(free_step + normal_force * Hinv_n);
+  };
+  double normal = 0.0;
+  const Vec3 frictionless = on_plane(Vec3::Zero(), normal);
+  // Sticking: back where it was at the step's start, on the plane. The tangential force that
+  // needs (the minimiser of q(Δ) − fᵀΔ has HΔ + g = f) must lie in the cone μ_s f_n.
+  const Vec3 stick = x_start - (n.dot(x_start) - ground.offset) * n - x;
+  const Vec3 holding = H * stick + g;
+  const Vec3 tangential = holding - n.dot(holding) * n;
+  const double tangential_norm = tangential.norm();
+  if (tangential_norm <= ground.static_friction * normal) return stick;
+  if (tangential_norm == 0.0 || ground.dynamic_friction == 0.0) return frictionless;
+  // Sliding: kinetic friction μ_k f_n along the holding force.
+  double unused = 0.0;
+  return on_plane(ground.dynamic_friction * normal / tangential_norm * tangential, unused);
 }
 
 }  // namespace rice::xpbd

@@ -19,13 +19,18 @@
 // det(F + δbᵀ) is linear in δ); only the Rayleigh term of C_D can make H_i indefinite, and
 // then H_i − m_i/h² I is projected onto the PSD cone (its eigenvalues clamped at zero).
 //
-// A ground plane (Model::ground) is a constraint of each particle's step: when the Newton
-// step would end below the plane, the step minimises the same quadratic on the plane instead
-// (one multiplier, closed form), and Coulomb friction then acts on the particle's motion over
-// the step as in the solver's ground projection (depth = how far below the plane the free step
-// ended). Handled after the sweep instead, the ground would move particles that the sweep's
-// later particles had already answered, and the sweeps' fixed point would not be the rest
-// state (a grain resting at h = 1/60 s stood 10% taller with 20 sweeps).
+// A ground plane (Model::ground) is a constraint of each particle's step. When the Newton
+// step would end below the plane, the normal force f_n is that of the step's minimiser on the
+// plane (one multiplier, closed form); the particle then sticks where it was at the step's
+// start (on the plane) when the tangential force that needs, f_t of f = HΔ + g, lies in the
+// cone |f_t| ≤ μ_s f_n, and otherwise slides on the plane against kinetic friction μ_k f_n
+// along f_t. (Taking f_n from the sticking reaction instead, an anisotropic H made it negative
+// at load-bearing particles, which then slid without friction: a grain kept circling at
+// 6 mm/s.) Handled after the sweep instead, the ground would move particles that the
+// sweep's later particles had already answered, and the sweeps' fixed point would not be the
+// rest state (a grain resting at h = 1/60 s stood 10% taller with 20 sweeps); friction judged
+// by displacement (slip against μ·depth, as the XPBD projection does) let a body resting at
+// h = 1/60 s creep at 3.6 mm/s, because the particle's Hessian is far from isotropic there.
 //
 // The solver (solver.hpp) runs K sweeps per substep for Method::kVbd.
 #pragma once
@@ -64,11 +69,10 @@ class VertexBlockDescent {
   void solve_particle(Model& model, const Positions& y, int i) const;
   /// The terms of E that involve particle i, with x_i at `xi` (up to constants).
   double particle_energy(const Model& model, const Positions& y, int i, const Vec3& xi) const;
-  /// The Newton step Δ = −H⁻¹g of particle i, or, when that ends below the ground plane, the
-  /// minimiser of the same quadratic on the plane; `depth` is how far below it would have ended.
-  Vec3 step_on_ground(const Model& model, int i, const Eigen::LLT<Mat3>& newton, const Vec3& gradient,
-                      double& depth) const;
-  Vec3 with_ground_friction(const Model& model, int i, const Vec3& step, double depth) const;
+  /// Particle i's step when its Newton step would end below the ground, with Coulomb friction
+  /// in force terms on its local quadratic q(Δ) = ½ΔᵀHΔ + gᵀΔ (H = `H`, factored in `newton`).
+  static Vec3 ground_contact_step(const GroundPlane& ground, const Vec3& x, const Vec3& x_start, const Mat3& H,
+                                  const Eigen::LLT<Mat3>& newton, const Vec3& g);
 
   std::vector<int> first_corner_;  ///< CSR: particle i's corners are corners_[first_corner_[i] .. [i + 1])
   std::vector<Corner> corners_;
