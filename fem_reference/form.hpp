@@ -44,6 +44,10 @@ class Form {
 
   /// The stencils whose blocks add_hessian may touch (fixed for the life of the form).
   virtual Stencils stencils() const = 0;
+
+  /// The largest t ≤ 1 for which x + t·dx is certainly admissible (finite energy all along
+  /// the way). Forms that are finite everywhere keep the default.
+  virtual double max_step(const Positions& /*x*/, const Positions& /*dx*/) const { return 1.0; }
 };
 
 }  // namespace rice::fem

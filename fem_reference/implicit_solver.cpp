@@ -1,6 +1,7 @@
 // Backward Euler and quasi-static solves of the shared model; see implicit_solver.hpp.
 #include "fem_reference/implicit_solver.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "xpbd/solver.hpp"
@@ -15,7 +16,7 @@ void append_if_used(std::vector<WeightedForm>& forms, const ConcreteForm* form, 
 
 }  // namespace
 
-ImplicitSolver::ImplicitSolver(xpbd::Model& model, const ImplicitSettings& settings)
+ImplicitSolver::ImplicitSolver(xpbd::Model& model, const ImplicitSettings& settings, const BarrierSettings& contact)
     : model_(model), settings_(settings), inertia_(model.particles.w), loads_(model) {
   const xpbd::Particles& p = model.particles;
   if (p.v.rows() != p.x.rows() || p.w.size() != p.x.rows())
@@ -24,9 +25,6 @@ ImplicitSolver::ImplicitSolver(xpbd::Model& model, const ImplicitSettings& setti
                                 std::to_string(p.w.size()) + " inverse masses");
   if (!(settings.time_step > 0.0))
     throw std::invalid_argument("reference solver: time_step must be > 0");
-  if (model.ground)
-    throw std::invalid_argument("reference solver: it has no contact; remove the ground plane "
-                                "(the validation scenes need none)");
   fixed_.resize(p.size());
   for (int i = 0; i < p.size(); ++i) fixed_[i] = !(p.w[i] > 0.0);
   for (const xpbd::Attachment& a : model.attachments) {
@@ -61,6 +59,11 @@ ImplicitSolver::ImplicitSolver(xpbd::Model& model, const ImplicitSettings& setti
   append_if_used(dynamic, step_attachment_.get(), h * h);
   step_strain_rate_damping_ = std::make_unique<StrainRateDampingForm>(model.neo_hookean, h);
   append_if_used(dynamic, step_strain_rate_damping_.get(), h * h);
+  if (model.ground || !model.colliders.empty()) {
+    contact_ = std::make_unique<BarrierContactForm>(model, contact);
+    append_if_used(dynamic, contact_.get(), h * h);
+    append_if_used(quasi_static, contact_.get(), 1.0);
+  }
   dynamic_ = std::make_unique<NewtonSolver>(dynamic, fixed_, settings.newton);
   static_ = std::make_unique<NewtonSolver>(quasi_static, fixed_, settings.newton);
 }
@@ -86,7 +89,8 @@ void ImplicitSolver::step() {
   step_distance_->set_targets(x_start);
   step_strain_rate_damping_->set_start(x_start);
 
-  // Start from XPBD's prediction x̃ = x̂ + h² M⁻¹ f.
+  // Start from XPBD's prediction x̃ = x̂ + h² M⁻¹ f, or as far towards it from xⁿ as the
+  // contact barrier allows.
   const bool has_forces = model_.external_forces.rows() != 0;
   p.x = x_hat;
   for (int i = 0; i < p.size(); ++i) {
@@ -94,6 +98,12 @@ void ImplicitSolver::step() {
     xpbd::Vec3 a = model_.gravity;
     if (has_forces) a += p.w[i] * model_.external_forces.row(i).transpose();
     p.x.row(i) += h * h * a.transpose();
+  }
+  if (contact_) {
+    require_outside_obstacles(x_start, "step");
+    contact_->set_time((step_ + 1) * h);
+    const Positions towards = p.x - x_start;
+    p.x = x_start + contact_->max_step(x_start, towards) * towards;
   }
   report_ = dynamic_->minimize(p.x);
   check("step");
@@ -103,8 +113,16 @@ void ImplicitSolver::step() {
   ++step_;
 }
 
+void ImplicitSolver::require_outside_obstacles(const Positions& x, const char* what) const {
+  if (std::isfinite(contact_->value(x))) return;
+  throw xpbd::SimulationError("reference solver, " + std::string(what) + " " + std::to_string(step_) +
+                              ": a particle is on or inside the ground or a collider, where the contact "
+                              "barrier is infinite (start every particle outside)");
+}
+
 NewtonReport ImplicitSolver::solve_static() {
   hold_rigid_attachments();
+  if (contact_) require_outside_obstacles(model_.particles.x, "static solve");
   report_ = static_->minimize(model_.particles.x);
   check("static solve");
   model_.particles.v.setZero();

@@ -26,13 +26,16 @@
 // without). Without damping (β = 0) (1) and (2) are the same equation.
 //
 // Quasi-static mode minimises U(x) − fᵀx. Pinned particles (w = 0) and rigid attachments
-// (α = 0, held at their targets) have no DOFs. The reference has no contact: a model with a
-// ground plane, or with a rigid spring or volume constraint, is rejected.
+// (α = 0, held at their targets) have no DOFs. Contact with the ground plane and with
+// half-space and sphere colliders is the barrier B of barrier_contact_form.hpp, added to U
+// (frictionless; posed at the end of each step); contact between bodies is not modelled, and
+// a model with a rigid spring or volume constraint or another collider shape is rejected.
 #pragma once
 
 #include <memory>
 #include <vector>
 
+#include "fem_reference/barrier_contact_form.hpp"
 #include "fem_reference/constraint_potential_form.hpp"
 #include "fem_reference/inertia_form.hpp"
 #include "fem_reference/load_form.hpp"
@@ -50,7 +53,8 @@ struct ImplicitSettings {
 class ImplicitSolver {
  public:
   /// Keeps a reference to the model. Throws std::invalid_argument for what it cannot solve.
-  ImplicitSolver(xpbd::Model& model, const ImplicitSettings& settings);
+  /// `contact` sets the barrier of the ground and colliders (barrier_contact_form.hpp).
+  ImplicitSolver(xpbd::Model& model, const ImplicitSettings& settings, const BarrierSettings& contact = {});
   ~ImplicitSolver();
 
   /// One backward-Euler step of settings().time_step. Throws xpbd::SimulationError when
@@ -62,10 +66,14 @@ class ImplicitSolver {
 
   /// The Newton report of the last step() or solve_static().
   const NewtonReport& report() const { return report_; }
+  /// The contact barrier, or null when the model has no ground and no colliders.
+  const BarrierContactForm* contact() const { return contact_.get(); }
   const ImplicitSettings& settings() const { return settings_; }
 
  private:
   void hold_rigid_attachments();
+  /// Throws xpbd::SimulationError when x has a particle where the barrier is infinite.
+  void require_outside_obstacles(const Positions& x, const char* what) const;
   void check(const char* what) const;
 
   xpbd::Model& model_;
@@ -81,6 +89,7 @@ class ImplicitSolver {
   std::unique_ptr<ConstraintPotentialForm<DistanceKernel>> step_distance_;
   std::unique_ptr<ConstraintPotentialForm<AttachmentKernel>> step_attachment_;
   std::unique_ptr<StrainRateDampingForm> step_strain_rate_damping_;
+  std::unique_ptr<BarrierContactForm> contact_;
   std::unique_ptr<NewtonSolver> dynamic_, static_;
   NewtonReport report_;
   long step_ = 0;

@@ -94,7 +94,11 @@ bool NewtonSolver::line_search(Positions& x, double energy0, const Eigen::Vector
   const double slope = g.dot(d);  // < 0 for a descent direction
   const double noise = kEnergyRoundOff * magnitude(x);
   const double gradient_norm = g.norm();
+  // Start no farther than every form allows (the contact barrier: nothing crosses a surface).
+  Positions direction = Positions::Zero(x.rows(), 3);
+  dofs_.scatter_add(d, 1.0, direction);
   double step = 1.0;
+  for (const WeightedForm& f : forms_) step = std::min(step, f.form->max_step(x, direction));
   Positions trial = x;
   bool accepted = false;
   for (int k = 0; k < settings_.max_backtracks && !accepted; ++k, step *= 0.5) {

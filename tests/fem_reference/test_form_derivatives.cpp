@@ -6,6 +6,7 @@
 #include <functional>
 #include <random>
 
+#include "fem_reference/barrier_contact_form.hpp"
 #include "fem_reference/constraint_potential_form.hpp"
 #include "fem_reference/inertia_form.hpp"
 #include "fem_reference/load_form.hpp"
@@ -140,6 +141,59 @@ TEST(FormDerivatives, MatchFiniteDifferencesNearDegenerateAndInverted) {
   Positions inverted = deformed(model.particles.x, 1e-4, 7);
   inverted.col(2) *= -1.0;
   check_all_forms(inverted, model.particles.x);
+}
+
+TEST(FormDerivatives, ContactBarrierMatchesFiniteDifferencesNearPlanesAndSpheres) {
+  // Particles between 0.1 d̂ and 1.2 d̂ from the ground, a tilted half-space and a sphere
+  // (d̂ = 1e-4 m): the barrier's gradient and Hessian against central differences.
+  xpbd::Model model;
+  model.ground = xpbd::GroundPlane{};
+  const double dhat = 1e-4, radius = 1e-3;
+  const xpbd::Vec3 centre(0.01, 0.0, 0.005);
+  const xpbd::Vec3 tilted = xpbd::Vec3(0.3, -0.2, 1.0).normalized();
+  xpbd::Collider sphere, half_space;
+  sphere.shape = xpbd::ColliderShape::kSphere;
+  sphere.radius = radius;
+  sphere.motion[0].translation = centre;
+  half_space.shape = xpbd::ColliderShape::kHalfSpace;
+  half_space.motion[0].translation = xpbd::Vec3(-0.01, 0.0, 0.0);
+  half_space.motion[0].rotation = xpbd::Quat::FromTwoVectors(xpbd::Vec3::UnitZ(), tilted);
+  model.colliders.push_back(sphere);
+  model.colliders.push_back(half_space);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> fraction(0.1, 1.2);
+  std::vector<xpbd::Vec3> points;
+  for (int k = 0; k < 4; ++k) {
+    points.emplace_back(0.002 * k, 0.001, fraction(random) * dhat);                            // ground
+    const xpbd::Vec3 out = xpbd::Vec3(1.0, 0.5 * k - 1.0, 0.7).normalized();
+    points.push_back(centre + (radius + fraction(random) * dhat) * out);                     // sphere
+    points.push_back(xpbd::Vec3(-0.01, 0.0, 0.0) + fraction(random) * dhat * tilted +
+                     0.001 * k * tilted.cross(xpbd::Vec3::UnitX()));  // half-space
+  }
+  model.particles.x.resize(static_cast<int>(points.size()), 3);
+  for (size_t i = 0; i < points.size(); ++i) model.particles.x.row(i) = points[i].transpose();
+  model.particles.v = Positions::Zero(model.particles.x.rows(), 3);
+  model.particles.w = Eigen::VectorXd::Ones(model.particles.x.rows());
+  const BarrierContactForm barrier(model, {.activation_distance = dhat, .stiffness = 1e3});
+  check_form(barrier, model.particles.x, 1e-4);
+  // The barrier is infinite on contact and inside; max_step keeps a step short of it.
+  Positions dx = Positions::Zero(model.particles.x.rows(), 3);
+  dx(0, 2) = -1.0;  // straight down through the ground
+  const double step = barrier.max_step(model.particles.x, dx);
+  EXPECT_GT(step, 0.0);
+  EXPECT_LT(step, model.particles.x(0, 2));
+  EXPECT_TRUE(std::isfinite(barrier.value(model.particles.x + step * dx)));
+  EXPECT_FALSE(std::isfinite(barrier.value(model.particles.x + 1.01 * model.particles.x(0, 2) * dx)));
+}
+
+TEST(FormDerivatives, IpcBarrierIsTwiceContinuousAtTheActivationDistance) {
+  const double dhat = 2e-4;
+  const BarrierValue at = ipc_barrier(dhat * (1.0 - 1e-7), dhat);
+  EXPECT_NEAR(at.value, 0.0, 1e-20);
+  EXPECT_NEAR(at.first, 0.0, 1e-14);
+  EXPECT_NEAR(at.second, 0.0, 1e-6);  // b''(d̂) = 0: 3 (d − d̂)²/d² → 0
+  EXPECT_GT(ipc_barrier(0.5 * dhat, dhat).second, 0.0);
+  EXPECT_LT(ipc_barrier(0.5 * dhat, dhat).first, 0.0);
 }
 
 TEST(FormDerivatives, ElasticEnergyEqualsTheXpbdModelEnergy) {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "fem_reference/implicit_solver.hpp"
+#include "xpbd/solver.hpp"
 #include "tests/common/finite_differences.hpp"
 #include "tests/common/jittered_mesh.hpp"
 #include "xpbd/energy.hpp"
@@ -96,15 +97,64 @@ TEST(SparseHessian, AssemblyDropsPinnedRowsAndColumns) {
 }
 
 TEST(ImplicitSolver, RejectsModelsItCannotSolve) {
-  xpbd::Model with_ground = block(1);
-  with_ground.ground = xpbd::GroundPlane{};
-  EXPECT_THROW(ImplicitSolver(with_ground, {}), std::invalid_argument);
+  xpbd::Model with_box = block(1);
+  xpbd::Collider box;
+  box.shape = xpbd::ColliderShape::kBox;
+  box.half_extents = xpbd::Vec3::Ones();
+  with_box.colliders.push_back(box);
+  EXPECT_THROW(ImplicitSolver(with_box, {}), std::invalid_argument);  // the barrier knows planes and spheres
+  xpbd::Model below = block(1);
+  below.ground = xpbd::GroundPlane{};
+  below.particles.x.col(2).array() -= 0.5;
+  EXPECT_THROW(ImplicitSolver(below, {}).step(), xpbd::SimulationError);
   xpbd::Model bad_sizes = block(1);
   bad_sizes.particles.v.resize(2, 3);
   EXPECT_THROW(ImplicitSolver(bad_sizes, {}), std::invalid_argument);
   xpbd::Model model = block(1);
   EXPECT_THROW(ImplicitSolver(model, {.time_step = 0.0, .newton = {}}), std::invalid_argument);
   EXPECT_THROW(ImplicitSolver(model, {.newton = {.tolerance = -1.0}}), std::invalid_argument);
+}
+
+TEST(ImplicitSolver, BarrierCarriesTheWeightOfABlockOnTheGround) {
+  // A 1 cm block set d̂/2 above the ground: the static solve ends with every particle above
+  // it, the lowest within d̂, and the contact force equal to the weight.
+  xpbd::Model model = block(2);
+  const BarrierSettings barrier;
+  model.particles.x.col(2).array() += 0.5 * barrier.activation_distance - model.particles.x.col(2).minCoeff();
+  model.ground = xpbd::GroundPlane{};
+  ImplicitSolver solver(model, {.time_step = 1e-3, .newton = {.tolerance = 1e-10}}, barrier);
+  ASSERT_TRUE(solver.solve_static().converged);
+  const double weight = (1.0 / model.particles.w.array()).sum() * 9.81;
+  const xpbd::Vec3 force = solver.contact()->contact_force(model.particles.x, 0);
+  EXPECT_NEAR(force.z(), weight, 1e-6 * weight);
+  EXPECT_LT(force.head<2>().norm(), 1e-6 * weight);
+  EXPECT_GT(model.particles.x.col(2).minCoeff(), 0.0);
+  EXPECT_LT(model.particles.x.col(2).minCoeff(), barrier.activation_distance);
+}
+
+TEST(ImplicitSolver, BlockDroppedOnASphereColliderNeverEntersIt) {
+  // A 1 cm block falls at 2 m/s onto a sphere collider of radius 2 cm: 2 mm a step at
+  // h = 1 ms, twenty times d̂. Every particle stays outside at every step.
+  xpbd::Model model = block(2);
+  const double radius = 0.02;
+  const xpbd::Vec3 centre(0.005, 0.004, -radius - 1e-3);
+  xpbd::Collider sphere;
+  sphere.shape = xpbd::ColliderShape::kSphere;
+  sphere.radius = radius;
+  sphere.motion[0].translation = centre;
+  model.colliders.push_back(sphere);
+  model.particles.v.col(2).setConstant(-2.0);
+  ImplicitSolver solver(model, {.time_step = 1e-3, .newton = {.tolerance = 1e-8}});
+  double closest = 1.0;
+  for (int step = 0; step < 60; ++step) {
+    solver.step();
+    const double gap =
+        ((model.particles.x.rowwise() - centre.transpose()).rowwise().norm().array() - radius).minCoeff();
+    ASSERT_GT(gap, 0.0) << "step " << step;
+    closest = std::min(closest, gap);
+  }
+  EXPECT_LT(closest, BarrierSettings{}.activation_distance);  // it did touch
+  EXPECT_GT(model.particles.v.col(2).mean(), -2.0);            // and was stopped or deflected
 }
 
 }  // namespace
