@@ -24,6 +24,7 @@
 #include "experiments/pour_scene.hpp"
 #include "experiments/pour_substep_study.hpp"
 #include "experiments/grain_substep_study.hpp"
+#include "experiments/contact_study.hpp"
 #include "experiments/render_command.hpp"
 #include "experiments/render_study.hpp"
 #include "experiments/water_absorption_figure.hpp"
@@ -105,6 +106,11 @@ struct CommandLine::Commands {
   std::string cdrf_out = "out/cdrf";
   CLI::App* pour_substeps_cmd = nullptr;
   CLI::App* grain_substeps_cmd = nullptr;
+  CLI::App* contact_cmd = nullptr;
+  ContactStudySettings contact;
+  std::string contact_out = "out/contact";
+  bool contact_quick = false;
+  CLI::Option *contact_depths_opt = nullptr, *contact_resolutions_opt = nullptr, *contact_steps_opt = nullptr;
   GrainSubstepStudySettings grain_substeps;
   std::string grain_substeps_out = "out/grain-substeps";
   PourSubstepStudySettings pour_substeps;
@@ -284,6 +290,22 @@ struct CommandLine::Commands {
         ->check(number_in(1, 1e12))->capture_default_str();
     grain_substeps_cmd->add_option("--seed", grain_substeps.seed, "grain seed")->check(seed_value())
         ->capture_default_str();
+
+    contact_cmd = study->add_subcommand(
+        "contact", "Hertz: a soft half sphere pressed on the ground, reference and vertex block descent");
+    contact_cmd->add_option("--out", contact_out, "output folder")->capture_default_str();
+    contact_cmd->add_flag("--quick", contact_quick, "two coarse meshes and two depths, for CI (seconds)");
+    contact_depths_opt = contact_cmd->add_option("--depths", contact.depths, "depths d/R, increasing")
+                             ->check(number_in(1e-4, 0.49))->capture_default_str();
+    contact_resolutions_opt = contact_cmd->add_option("--resolutions", contact.resolutions,
+                                                      "vertex counts of the half sphere's tet mesh")
+                                  ->check(number_in(20, 200000))->capture_default_str();
+    contact_cmd->add_option("--young", contact.young, "Young's modulus [Pa]")->check(number_in(1, 1e12))
+        ->capture_default_str();
+    contact_cmd->add_option("--vbd-iterations", contact.vbd_iterations, "sweeps per step")
+        ->check(number_in(1, 1000))->capture_default_str();
+    contact_steps_opt = contact_cmd->add_option("--vbd-steps", contact.vbd_steps, "steps of 1/60 s per depth")
+        ->check(number_in(1, 100000))->capture_default_str();
 
     stiffness_cmd = study->add_subcommand("xpbd-stiffness",
                                           "cantilever rest deflection vs iteration count, XPBD against PBD");
@@ -506,6 +528,16 @@ struct CommandLine::Commands {
         ->check(seed_value())->capture_default_str();
   }
 
+  ContactStudySettings contact_settings() const {
+    ContactStudySettings settings = contact_quick ? ContactStudySettings::quick() : ContactStudySettings{};
+    if (contact_depths_opt->count()) settings.depths = contact.depths;
+    if (contact_resolutions_opt->count()) settings.resolutions = contact.resolutions;
+    settings.young = contact.young;
+    settings.vbd_iterations = contact.vbd_iterations;
+    if (contact_steps_opt->count()) settings.vbd_steps = contact.vbd_steps;
+    return settings;
+  }
+
   ConvergenceSettings convergence_settings() const {
     ConvergenceSettings settings = convergence_quick ? ConvergenceSettings::quick() : ConvergenceSettings{};
     if (duration_opt->count()) settings.duration = convergence.duration;
@@ -540,6 +572,7 @@ void CommandLine::validate() const {
   if (*c.render_study_cmd) experiments::validate(c.render_study);
   if (*c.oscillator_cmd) experiments::validate(c.oscillator);
   if (*c.convergence_cmd) experiments::validate(c.convergence_settings());
+  if (*c.contact_cmd) experiments::validate(c.contact_settings());
   if (*c.grains_cmd) experiments::validate(c.grain_library_settings());
   if (*c.figure11_cmd) experiments::validate(c.absorption);
   if (*c.figure13_cmd) experiments::validate(c.figure13);
@@ -558,6 +591,7 @@ void CommandLine::run() const {
   if (*c.grain_substeps_cmd) grain_substep_study_command(c.grain_substeps, c.grain_substeps_out);
   if (*c.oscillator_cmd) oscillator_study_command(c.oscillator, c.oscillator_out);
   if (*c.convergence_cmd) convergence_study_command(c.convergence_settings(), c.convergence_out);
+  if (*c.contact_cmd) contact_study_command(c.contact_settings(), c.contact_out);
   if (*c.grains_cmd) grain_library_command(c.grain_library_settings(), c.library_out);
   if (*c.figure8_cmd) grain_sizes_figure_command(c.figure_seed, c.figure8_out);
   if (*c.figure9_cmd) cultivars_figure_command(c.figure_seed, c.figure9_count, c.figure9_out);

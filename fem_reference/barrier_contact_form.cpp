@@ -24,7 +24,7 @@ BarrierValue ipc_barrier(double d, double dhat) {
 }
 
 BarrierContactForm::BarrierContactForm(const xpbd::Model& model, const BarrierSettings& settings)
-    : model_(model), settings_(settings) {
+    : settings_(settings) {
   if (!(settings.activation_distance > 0.0) || !(settings.stiffness > 0.0) ||
       !std::isfinite(settings.activation_distance) || !std::isfinite(settings.stiffness))
     throw std::invalid_argument("reference solver: the contact barrier needs a positive, finite d-hat and stiffness");

@@ -33,7 +33,8 @@ BarrierValue ipc_barrier(double d, double dhat);
 class BarrierContactForm final : public ElementForm<1> {
  public:
   /// Obstacles: the model's ground plane and its half-space and sphere colliders (posed at
-  /// time 0 until set_time); one element per particle with inverse mass > 0. Throws
+  /// time 0 until set_time; the form keeps pointers to the colliders); one element per
+  /// particle with inverse mass > 0. Throws
   /// std::invalid_argument for a collider of another shape or settings that are not positive.
   BarrierContactForm(const xpbd::Model& model, const BarrierSettings& settings);
 
@@ -70,7 +71,6 @@ class BarrierContactForm final : public ElementForm<1> {
   };
   static Distance distance(const Obstacle& o, const xpbd::Vec3& p);
 
-  const xpbd::Model& model_;
   BarrierSettings settings_;
   std::vector<int> particles_;
   std::vector<Obstacle> obstacles_;

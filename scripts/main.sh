@@ -16,6 +16,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 ./build/experiments/rice pour --container plate --count 400 --frames 180 --pour-seconds 3.5 --spout-height 0.05 --no-cohesion --out out/heap-dry
 ./build/experiments/rice study pour-substeps --out out/pour-substeps
 ./build/experiments/rice study grain-substeps --out out/grain-substeps
+./build/experiments/rice study contact --out out/contact
 ./build/experiments/rice study cdrf --out out/cdrf
 ./build/experiments/rice figure 13 --out out/figure13
 ./build/experiments/rice study render --out out/render-study

@@ -1,0 +1,453 @@
+// The Hertz contact study; see contact_study.hpp.
+#include "experiments/contact_study.hpp"
+
+#include <algorithm>
+#include <Eigen/Geometry>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+#include "experiments/gnuplot.hpp"
+#include "experiments/interrupt.hpp"
+#include "experiments/item_loop.hpp"
+#include "experiments/output.hpp"
+#include "fem_reference/implicit_solver.hpp"
+#include "grains/grain_generator.hpp"
+#include "grains/simulation_mesh.hpp"
+#include "xpbd/energy.hpp"
+#include "xpbd/solver.hpp"
+
+namespace rice::experiments {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using xpbd::Vec3;
+
+/// Triangles between two rings of vertex indices (same angular direction), or a fan when one
+/// ring is a single vertex; every triangle runs forward along `a` and backward along `b`, so
+/// consecutive strips share edges in opposite directions (a consistently oriented surface).
+void stitch(const std::vector<int>& a, const std::vector<int>& b, std::vector<Eigen::Vector3i>& triangles) {
+  const int na = static_cast<int>(a.size()), nb = static_cast<int>(b.size());
+  int i = 0, j = 0;
+  while ((na > 1 && i < na) || (nb > 1 && j < nb)) {
+    const bool advance_a = nb == 1 || (na > 1 && i < na && (j >= nb || (i + 1) * nb <= (j + 1) * na));
+    if (advance_a) {
+      triangles.emplace_back(a[i % na], a[(i + 1) % na], b[j % nb]);
+      ++i;
+    } else {
+      triangles.emplace_back(a[i % na], b[(j + 1) % nb], b[j % nb]);
+      ++j;
+    }
+  }
+}
+
+/// The closed surface of the lower half of the sphere of radius R centred at (0, 0, R): `rings`
+/// rings of 6k vertices from the pole to the equator, then the flat face at z = R the same way
+/// back to its centre. Outward oriented.
+grains::SurfaceMesh half_sphere_surface(double R, int rings) {
+  std::vector<Vec3> points{Vec3::Zero()};
+  std::vector<std::vector<int>> sequence{{0}};
+  const auto add_ring = [&](int count, const auto& place) {
+    std::vector<int> ring;
+    for (int j = 0; j < count; ++j) {
+      ring.push_back(static_cast<int>(points.size()));
+      points.push_back(place(2.0 * std::numbers::pi * j / count));
+    }
+    sequence.push_back(ring);
+  };
+  for (int k = 1; k <= rings; ++k) {
+    const double alpha = 0.5 * std::numbers::pi * k / rings;  // polar angle from the pole
+    add_ring(6 * k, [&](double phi) {
+      return Vec3(R * std::sin(alpha) * std::cos(phi), R * std::sin(alpha) * std::sin(phi), R - R * std::cos(alpha));
+    });
+  }
+  for (int k = rings - 1; k >= 1; --k)
+    add_ring(6 * k, [&](double phi) { return Vec3(R * k / rings * std::cos(phi), R * k / rings * std::sin(phi), R); });
+  sequence.push_back({static_cast<int>(points.size())});
+  points.emplace_back(0.0, 0.0, R);
+  std::vector<Eigen::Vector3i> triangles;
+  for (size_t r = 0; r + 1 < sequence.size(); ++r) stitch(sequence[r], sequence[r + 1], triangles);
+  grains::SurfaceMesh mesh;
+  mesh.V.resize(static_cast<Eigen::Index>(points.size()), 3);
+  for (size_t i = 0; i < points.size(); ++i) mesh.V.row(static_cast<Eigen::Index>(i)) = points[i].transpose();
+  mesh.F.resize(static_cast<Eigen::Index>(triangles.size()), 3);
+  double volume = 0.0;
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    mesh.F.row(static_cast<Eigen::Index>(t)) = triangles[t].transpose();
+    volume += points[triangles[t][0]].dot(points[triangles[t][1]].cross(points[triangles[t][2]])) / 6.0;
+  }
+  if (volume < 0.0) mesh.F.col(1).swap(mesh.F.col(2));
+  return mesh;
+}
+
+/// The half sphere's tet mesh with about `target` vertices.
+grains::VolumeMesh half_sphere_mesh(double R, int target) {
+  grains::SimulationMeshParameters p;
+  p.min_vertices = std::max(4, static_cast<int>(0.8 * target));
+  p.max_vertices = std::max(p.min_vertices, static_cast<int>(1.25 * target));
+  const double shrink = std::cbrt(40.0 / target);  // the defaults give about 40 vertices
+  p.edge_size *= shrink;
+  p.facet_distance *= shrink;
+  const int rings = std::max(6, static_cast<int>(std::lround(2.0 * std::cbrt(target))));
+  return grains::make_simulation_mesh(half_sphere_surface(R, rings), p, 7);
+}
+
+/// The half sphere as a model: held flat face, ground at z = 0, no gravity; its pole `lift`
+/// above the ground.
+struct HalfSphere {
+  xpbd::Model model;
+  std::vector<int> face;  ///< held particles
+  Eigen::VectorXd face_z;  ///< their heights before loading
+  int tets = 0;
+};
+
+HalfSphere make_half_sphere(const ContactStudySettings& s, const grains::VolumeMesh& mesh, double lift) {
+  HalfSphere body;
+  const xpbd::TetMesh tets{mesh.V, mesh.T};
+  body.model.particles = xpbd::make_particles(tets, s.density);
+  xpbd::add_neo_hookean_tets(body.model, tets, xpbd::lame_from_young_poisson(s.young, s.poisson));
+  body.model.gravity.setZero();
+  body.model.ground = xpbd::GroundPlane{};
+  body.model.particles.x.col(2).array() += lift - body.model.particles.x.col(2).minCoeff();
+  const double top = body.model.particles.x.col(2).maxCoeff();
+  for (int i = 0; i < body.model.particles.size(); ++i)
+    if (body.model.particles.x(i, 2) > top - 1e-9 * s.radius) body.face.push_back(i);
+  xpbd::pin_particles(body.model, body.face);
+  body.face_z.resize(static_cast<Eigen::Index>(body.face.size()));
+  for (size_t k = 0; k < body.face.size(); ++k) body.face_z[k] = body.model.particles.x(body.face[k], 2);
+  body.tets = static_cast<int>(mesh.T.rows());
+  return body;
+}
+
+void lower_face(HalfSphere& body, double by) {
+  for (size_t k = 0; k < body.face.size(); ++k) body.model.particles.x(body.face[k], 2) = body.face_z[k] - by;
+}
+
+/// −Σ ∂U/∂z over the held face: the force with which the body pushes the face up.
+double face_force(const HalfSphere& body) {
+  const xpbd::Positions gradient = xpbd::elastic_energy_gradient(body.model);
+  double force = 0.0;
+  for (const int i : body.face) force -= gradient(i, 2);
+  return force;
+}
+
+double hertz_force(const ContactStudySettings& s, double d) {
+  const double effective = s.young / (1.0 - s.poisson * s.poisson);
+  return 4.0 / 3.0 * effective * std::sqrt(s.radius) * std::pow(d, 1.5);
+}
+
+HertzRow row(const ContactStudySettings& s, const char* solver, const HalfSphere& body, double d, double force,
+             double seconds) {
+  HertzRow r;
+  r.solver = solver;
+  r.vertices = body.model.particles.size();
+  r.tets = body.tets;
+  r.depth = d;
+  r.force = force;
+  r.hertz = hertz_force(s, d);
+  r.error = (force - r.hertz) / r.hertz;
+  r.seconds = seconds;
+  return r;
+}
+
+std::vector<HertzRow> reference_rows(const ContactStudySettings& s, const grains::VolumeMesh& mesh) {
+  // The pole starts d̂/2 above the ground (the barrier is infinite on it); the face is lowered
+  // by that much more than d, so that d is counted from first touch.
+  const double gap = 0.5 * s.barrier_distance;
+  HalfSphere body = make_half_sphere(s, mesh, gap);
+  fem::ImplicitSolver solver(body.model, {.time_step = 1e-3, .newton = {.tolerance = 1e-9, .max_iterations = 300}},
+                             {.activation_distance = s.barrier_distance, .stiffness = s.barrier_stiffness});
+  std::vector<HertzRow> rows;
+  for (const double depth : s.depths) {
+    stop_point();
+    const double d = depth * s.radius;
+    lower_face(body, d + gap);
+    const auto start = Clock::now();
+    const fem::NewtonReport report = solver.solve_static();
+    rows.push_back(row(s, "reference", body, d, report.converged ? face_force(body) : std::nan(""),
+                       seconds_since(start)));
+  }
+  return rows;
+}
+
+std::vector<HertzRow> vbd_rows(const ContactStudySettings& s, const grains::VolumeMesh& mesh) {
+  HalfSphere body = make_half_sphere(s, mesh, 0.0);
+  xpbd::Solver solver(body.model, {.time_step = 1.0 / 60.0, .iterations = s.vbd_iterations,
+                                   .method = xpbd::Method::kVbd, .execution = xpbd::Execution::kSerial});
+  std::vector<HertzRow> rows;
+  for (const double depth : s.depths) {
+    stop_point();
+    const double d = depth * s.radius;
+    lower_face(body, d);
+    const auto start = Clock::now();
+    for (int step = 0; step < s.vbd_steps; ++step) solver.step();
+    HertzRow r = row(s, "vbd", body, d, face_force(body), seconds_since(start));
+    r.fastest = body.model.particles.v.rowwise().norm().maxCoeff();
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+/// The grain as a model at positions x: its tets, a frictionless ground, gravity.
+xpbd::Model grain_model(const ContactStudySettings& s, const grains::Grain& grain, const xpbd::Positions& x) {
+  const xpbd::TetMesh mesh{grain.simulation.V, grain.simulation.T};
+  xpbd::Model model;
+  model.particles = xpbd::make_particles(mesh, grain.simulation_density);
+  xpbd::add_neo_hookean_tets(model, mesh, xpbd::lame_from_young_poisson(s.young, s.poisson));
+  model.particles.x = x;
+  model.ground = xpbd::GroundPlane{};
+  return model;
+}
+
+/// The undeformed grain turned into the pose it settles into (found by a long run of vertex
+/// block descent with friction, the rotation fitted by Umeyama's method), its lowest point
+/// `lift` above the ground.
+xpbd::Positions settled_pose(const ContactStudySettings& s, const grains::Grain& grain, double lift) {
+  xpbd::Positions rest = grain.simulation.V;
+  rest.col(2).array() -= rest.col(2).minCoeff();
+  xpbd::Model model = grain_model(s, grain, rest);
+  model.ground->static_friction = 0.5;
+  model.ground->dynamic_friction = 0.4;
+  xpbd::Solver solver(model, {.time_step = 1.0 / 60.0, .substeps = 2, .iterations = 30,
+                              .method = xpbd::Method::kVbd, .execution = xpbd::Execution::kSerial});
+  for (int frame = 0; frame < 120; ++frame) solver.step();
+  const Eigen::Matrix4d fit =
+      Eigen::umeyama(Eigen::Matrix3Xd(rest.transpose()), Eigen::Matrix3Xd(model.particles.x.transpose()), false);
+  const xpbd::Mat3 R = fit.topLeftCorner<3, 3>();
+  xpbd::Positions pose = (rest.rowwise() - rest.colwise().mean()) * R.transpose();
+  pose.col(2).array() += lift - pose.col(2).minCoeff();
+  return pose;
+}
+
+/// f_i = ∂U/∂x_i − m_i g: the force that holds each particle at rest (the contact force where
+/// the grain touches, zero elsewhere).
+xpbd::Positions holding_forces(const xpbd::Model& model) {
+  xpbd::Positions f = xpbd::elastic_energy_gradient(model);
+  for (int i = 0; i < model.particles.size(); ++i) f.row(i) -= model.gravity.transpose() / model.particles.w[i];
+  return f;
+}
+
+/// RMS distance between two shapes on the ground after removing what a frictionless ground
+/// leaves free: a horizontal shift and a turn about the vertical (fitted in the plane).
+double shape_distance(const xpbd::Positions& a, const xpbd::Positions& b) {
+  Eigen::RowVector3d ca = a.colwise().mean(), cb = b.colwise().mean();
+  ca[2] = cb[2] = 0.0;
+  const xpbd::Positions p = a.rowwise() - ca, q = b.rowwise() - cb;
+  const double turn = std::atan2((p.col(0).array() * q.col(1).array() - p.col(1).array() * q.col(0).array()).sum(),
+                                 (p.col(0).array() * q.col(0).array() + p.col(1).array() * q.col(1).array()).sum());
+  const xpbd::Mat3 R = Eigen::AngleAxisd(turn, Vec3::UnitZ()).toRotationMatrix();
+  return std::sqrt((p * R.transpose() - q).rowwise().squaredNorm().mean());
+}
+
+}  // namespace
+
+std::vector<GrainContactRow> run_grain_contact(const ContactStudySettings& s) {
+  validate(s);
+  grains::GrainRecipe recipe;
+  recipe.cultivar = grains::cultivar_by_name("japonica");
+  const grains::Grain grain = grains::make_grain(recipe, s.grain_seed);
+  const xpbd::Positions pose = settled_pose(s, grain, 0.5 * s.barrier_distance);
+  const double length = (grain.simulation.V.colwise().maxCoeff() - grain.simulation.V.colwise().minCoeff()).maxCoeff();
+  xpbd::Model reference = grain_model(s, grain, pose);
+  fem::ImplicitSolver(reference, {.time_step = 1e-3, .newton = {.tolerance = 1e-10, .max_iterations = 300}},
+                      {.activation_distance = s.barrier_distance, .stiffness = s.barrier_stiffness})
+      .solve_static();
+  const xpbd::Positions reference_forces = holding_forces(reference);
+  struct Job {
+    xpbd::Method method;
+    int substeps, iterations;
+  };
+  std::vector<Job> jobs;
+  for (const int n : s.xpbd_substeps)
+    for (const int k : s.xpbd_iterations) jobs.push_back({xpbd::Method::kXpbd, n, k});
+  for (const int n : s.vbd_substeps)
+    for (const int k : s.vbd_grain_iterations) jobs.push_back({xpbd::Method::kVbd, n, k});
+  std::vector<GrainContactRow> rows(jobs.size());
+  for_each_item("contact: grain on the ground", static_cast<int>(jobs.size()), [&](int j) {
+    GrainContactRow& r = rows[j];
+    r.method = jobs[j].method == xpbd::Method::kVbd ? "vbd" : "xpbd";
+    r.substeps = jobs[j].substeps;
+    r.iterations = jobs[j].iterations;
+    xpbd::Model model = grain_model(s, grain, pose);
+    xpbd::Solver solver(model, {.time_step = 1.0 / 60.0, .substeps = r.substeps, .iterations = r.iterations,
+                                .method = jobs[j].method, .execution = xpbd::Execution::kSerial});
+    const auto start = Clock::now();
+    bool finite = true;
+    try {
+      for (int frame = 0; frame < 60; ++frame) solver.step();
+    } catch (const xpbd::SimulationError&) {
+      finite = false;
+    }
+    r.wall = seconds_since(start);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    r.stable = finite &&
+               xpbd::tet_volumes(model.particles.x, xpbd::Tets(grain.simulation.T)).minCoeff() > 0.0 &&
+               model.particles.v.rowwise().norm().maxCoeff() < 1e-2;
+    r.shape_error = finite ? shape_distance(model.particles.x, reference.particles.x) / length : nan;
+    r.force_error = finite ? (holding_forces(model) - reference_forces).norm() / reference_forces.norm() : nan;
+  });
+  return rows;
+}
+
+ContactStudySettings ContactStudySettings::quick() {
+  ContactStudySettings s;
+  s.depths = {0.05, 0.1};
+  s.resolutions = {150, 500};
+  s.vbd_steps = 15;
+  s.xpbd_substeps = {80, 320};
+  s.xpbd_iterations = {5};
+  s.vbd_substeps = {1, 10};
+  s.vbd_grain_iterations = {20};
+  return s;
+}
+
+void validate(const ContactStudySettings& s) {
+  if (!(s.radius > 0.0) || !(s.young > 0.0) || !(s.poisson > -1.0 && s.poisson < 0.5) || !(s.density > 0.0))
+    throw std::invalid_argument("contact study: need radius, young, density > 0 and -1 < poisson < 0.5");
+  if (s.depths.empty() || !std::is_sorted(s.depths.begin(), s.depths.end()) || !(s.depths.front() > 0.0) ||
+      !(s.depths.back() < 0.5))
+    throw std::invalid_argument("contact study: depths must be increasing fractions of the radius in (0, 0.5)");
+  if (s.resolutions.empty())
+    throw std::invalid_argument("contact study: give at least one resolution");
+  for (const int r : s.resolutions)
+    if (r < 20 || r > 200000) throw std::invalid_argument("contact study: resolutions must be in [20, 200000] vertices");
+  if (!(s.barrier_distance > 0.0) || !(s.barrier_stiffness > 0.0) ||
+      !(s.barrier_distance < 0.5 * s.depths.front() * s.radius))
+    throw std::invalid_argument("contact study: the barrier's d-hat must be positive and under half the smallest depth");
+  if (s.vbd_steps < 1 || s.vbd_iterations < 1)
+    throw std::invalid_argument("contact study: vbd steps and iterations must be >= 1");
+  for (const auto* list : {&s.xpbd_substeps, &s.xpbd_iterations, &s.vbd_substeps, &s.vbd_grain_iterations})
+    for (const int n : *list)
+      if (n < 1 || n > 10000) throw std::invalid_argument("contact study: substep and iteration counts must be in [1, 10000]");
+}
+
+std::vector<HertzRow> run_hertz(const ContactStudySettings& s) {
+  validate(s);
+  std::vector<grains::VolumeMesh> meshes(s.resolutions.size());
+  for_each_item("contact: half-sphere meshes", static_cast<int>(meshes.size()),
+                [&](int r) { meshes[r] = half_sphere_mesh(s.radius, s.resolutions[r]); });
+  std::vector<std::vector<HertzRow>> parts(2 * meshes.size());
+  for_each_item("contact: Hertz solves", static_cast<int>(parts.size()), [&](int job) {
+    const grains::VolumeMesh& mesh = meshes[job / 2];
+    parts[job] = job % 2 == 0 ? reference_rows(s, mesh) : vbd_rows(s, mesh);
+  });
+  std::vector<HertzRow> rows;
+  for (const auto& part : parts) rows.insert(rows.end(), part.begin(), part.end());
+  return rows;
+}
+
+void contact_study_command(const ContactStudySettings& s, const std::filesystem::path& folder) {
+  validate(s);
+  make_output_folder(folder);
+  const auto start = Clock::now();
+  const std::vector<HertzRow> rows = run_hertz(s);
+  CsvTable table({"solver", "vertices", "tets", "depth_rel", "depth_m", "force_n", "hertz_n", "rel_error", "seconds",
+                  "fastest_m_per_s"});
+  std::printf("\n%-9s %8s %8s %7s %12s %12s %9s %8s\n", "solver", "vertices", "tets", "d/R", "F [N]", "Hertz [N]",
+              "error", "wall [s]");
+  for (const HertzRow& r : rows) {
+    table.add_row({r.solver, cell(r.vertices), cell(r.tets), cell(r.depth / s.radius), cell(r.depth), cell(r.force),
+                   cell(r.hertz), cell(r.error), cell(r.seconds), cell(r.fastest)});
+    std::printf("%-9s %8d %8d %7.3f %12.4e %12.4e %8.1f%% %8.2f\n", r.solver.c_str(), r.vertices, r.tets,
+                r.depth / s.radius, r.force, r.hertz, 100.0 * r.error, r.seconds);
+  }
+  write_file_atomically(folder / "contact_hertz.csv", table.text());
+  // The finding: the reference's error at the deepest depth on the coarsest and finest mesh.
+  const auto error_at = [&](const char* solver, int vertices_rank) {
+    std::vector<const HertzRow*> deepest;
+    for (const HertzRow& r : rows)
+      if (r.solver == solver && r.depth == s.depths.back() * s.radius) deepest.push_back(&r);
+    std::sort(deepest.begin(), deepest.end(), [](auto* a, auto* b) { return a->vertices < b->vertices; });
+    const HertzRow* r = vertices_rank == 0 ? deepest.front() : deepest.back();
+    return fixed(100.0 * r->error, 1) + "% (" + std::to_string(r->vertices) + " vertices)";
+  };
+  const std::string title = "Hertz at d = " + fixed(100.0 * s.depths.back(), 0) + "% R: reference " +
+                            error_at("reference", 0) + " to " + error_at("reference", 1) + "; VBD " +
+                            error_at("vbd", 0) + " to " + error_at("vbd", 1);
+  std::printf("\n%s\n", title.c_str());
+  render_plot(folder, "contact_hertz", R"(set terminal pngcairo size 1400,600
+set output 'contact_hertz.png'
+set datafile separator ','
+set datafile missing 'nan'
+set multiplot layout 1,2 title ')" + title + R"('
+set logscale xy
+set format x '10^{%L}'
+set format y '10^{%L}'
+set xlabel 'depth d [m]'
+set ylabel 'force on the held face [N]'
+set key top left
+E = )" + cell(s.young / (1.0 - s.poisson * s.poisson)) + R"(
+R = )" + cell(s.radius) + R"(
+hertz(d) = 4.0/3.0 * E * sqrt(R) * d**1.5
+set xrange [*:*]
+plot 'contact_hertz.csv' using (strcol(1) eq 'reference' ? $5 : 1/0):6:2 with points pt 7 ps 1.3 palette title 'reference (colour: vertices)', \
+     '' using (strcol(1) eq 'vbd' ? $5 : 1/0):6:2 with points pt 6 ps 2 palette title 'vertex block descent', \
+     '' using 5:(hertz($5)) with lines lw 2 lc rgb 'black' title 'Hertz'
+set xlabel 'vertices of the half sphere'
+set ylabel '|F − Hertz| / Hertz'
+set key top right
+plot 'contact_hertz.csv' using (strcol(1) eq 'reference' ? $2 : 1/0):(abs($8)):(sprintf('%.0f%%', 100*$4)) with labels point pt 7 offset 1.5,0 title 'reference (labels: d/R)', \
+     '' using (strcol(1) eq 'vbd' ? $2 : 1/0):(abs($8)) with points pt 6 ps 2 title 'vertex block descent'
+unset multiplot
+)");
+  stop_point();
+  const std::vector<GrainContactRow> grain_rows = run_grain_contact(s);
+  CsvTable grain_table({"method", "substeps", "iterations", "h_s", "stable", "shape_error_rel", "force_error_rel",
+                        "wall_s_per_sim_s"});
+  std::printf("\nGrain on the ground against the reference rest state\n%-5s %5s %3s %7s %12s %12s %10s\n", "",
+              "N", "K", "stable", "shape/len", "force", "wall [s/s]");
+  for (const GrainContactRow& r : grain_rows) {
+    grain_table.add_row({r.method, cell(r.substeps), cell(r.iterations), cell(1.0 / (60.0 * r.substeps)),
+                         cell(r.stable ? 1 : 0), cell(r.shape_error), cell(r.force_error), cell(r.wall)});
+    std::printf("%-5s %5d %3d %7s %12.3e %12.3e %10.4f\n", r.method.c_str(), r.substeps, r.iterations,
+                r.stable ? "yes" : "NO", r.shape_error, r.force_error, r.wall);
+  }
+  write_file_atomically(folder / "contact_grain.csv", grain_table.text());
+  // The finding: the cheapest stable run of each method with its shape within 1% of the reference's.
+  const auto cheapest = [&](const char* method) {
+    const GrainContactRow* best = nullptr;
+    for (const GrainContactRow& r : grain_rows)
+      if (r.method == method && r.stable && r.shape_error < 1e-2 && (!best || r.wall < best->wall)) best = &r;
+    if (!best) return std::string(method) + " never";
+    return std::string(method) + " at N = " + std::to_string(best->substeps) + ", K = " + std::to_string(best->iterations) +
+           " (" + fixed(best->wall, 3) + " s/s)";
+  };
+  const std::string grain_title = "Grain at rest within 1% of the reference rest shape: " + cheapest("xpbd") + ", " +
+                                  cheapest("vbd");
+  std::printf("%s\n", grain_title.c_str());
+  render_plot(folder, "contact_grain", R"(set terminal pngcairo size 1400,600
+set output 'contact_grain.png'
+set datafile separator ','
+set datafile missing 'nan'
+set multiplot layout 1,2 title ')" + grain_title + R"('
+set logscale xy
+set format x '10^{%L}'
+set format y '10^{%L}'
+set xlabel 'wall time per simulated second [s]'
+set cblabel 'log2 substeps per frame'
+set key bottom left
+do for [col in '6 7'] {
+  set ylabel (col eq '6' ? 'RMS distance to the reference rest shape / grain length' : '|f − f_ref| / |f_ref| (holding forces)')
+  plot 'contact_grain.csv' using (strcol(1) eq 'xpbd' && $5 == 1 ? $8 : 1/0):(column(col+0)):(log($2)/log(2)) with points pt 7 ps 1.4 palette title 'XPBD (stable runs)', \
+       '' using (strcol(1) eq 'vbd' && $5 == 1 ? $8 : 1/0):(column(col+0)):(log($2)/log(2)) with points pt 5 ps 1.4 palette title 'vertex block descent'
+}
+unset multiplot
+)");
+  stop_point();
+  write_file_atomically(folder / "run_info.txt",
+                        run_info({{"study", "contact"},
+                                  {"radius_m", cell(s.radius)},
+                                  {"young_pa", cell(s.young)},
+                                  {"poisson", cell(s.poisson)},
+                                  {"barrier_distance_m", cell(s.barrier_distance)},
+                                  {"barrier_stiffness_n_per_m", cell(s.barrier_stiffness)},
+                                  {"vbd_steps", cell(s.vbd_steps)},
+                                  {"vbd_iterations", cell(s.vbd_iterations)},
+                                  {"wall_s", cell(seconds_since(start))}}));
+  std::printf("wall time %.1f s\n", seconds_since(start));
+}
+
+}  // namespace rice::experiments

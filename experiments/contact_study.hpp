@@ -1,0 +1,87 @@
+// `rice study contact` (issue 12, §3): contact checked against a known answer. Hertz: a soft
+// sphere of radius R (5 mm, E = 100 kPa, ν = 0.3) pressed onto a rigid plane by d = 1–10% of R
+// must push back with F = (4/3) E* √R d^{3/2}, E* = E / (1 − ν²).
+//
+// The body is the lower half of the sphere: its flat face is the sphere's plane of symmetry
+// when a whole sphere is squeezed between two plates, so holding that face and lowering it by d
+// is the plates' approach d per contact (the face is held, not free to slide: that stiffens it
+// slightly, a bias that does not fall with the mesh). Its tet mesh is CGAL's
+// (grains/simulation_mesh.hpp) at several vertex counts. For each depth, in increasing order:
+//
+//   reference         a quasi-static Newton solve with the ground as the IPC barrier
+//                     (fem_reference/barrier_contact_form.hpp);
+//   vertex block      dynamics to rest (1/60 s steps, the ground a constraint of each particle's
+//   descent           step, xpbd/vertex_block_descent.hpp), started from the previous depth.
+//
+// F is the reaction on the held face, −Σ ∂U/∂z over its particles, the same for both.
+//
+// Grain on the ground: a japonica grain (E = 100 kPa) set down undeformed, in the pose it
+// settles into, on a frictionless ground under gravity. The reference's static solve gives its
+// rest shape and the contact force on each particle (the barrier's); XPBD and vertex block
+// descent run one second over a grid of substeps N and iterations K, and their final shape
+// (horizontal drift removed) and contact forces (f_i = ∂U/∂x_i − m_i g, what holds each particle
+// at rest) are compared with the reference's: what contact accuracy costs in time.
+//
+// Writes contact_hertz.csv, contact_hertz.png (force against depth beside Hertz; error against
+// mesh size), contact_grain.csv, contact_grain.png and run_info.txt.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace rice::experiments {
+
+struct ContactStudySettings {
+  double radius = 5e-3;   ///< R [m]
+  double young = 1e5;     ///< E [Pa]
+  double poisson = 0.3;   ///< ν
+  double density = 1100;  ///< [kg/m³] (dynamics only)
+  std::vector<double> depths{0.01, 0.02, 0.05, 0.1};  ///< d / R, increasing
+  std::vector<int> resolutions{250, 1000, 4000};      ///< target vertex counts of the half sphere
+  double barrier_distance = 2e-7;   ///< d̂ of the reference's barrier [m] (bounds its gap)
+  double barrier_stiffness = 1e4;   ///< κ [N/m]
+  int vbd_steps = 30;               ///< steps of 1/60 s per depth
+  int vbd_iterations = 30;          ///< sweeps per step
+  unsigned grain_seed = 3;          ///< the grain on the ground
+  std::vector<int> xpbd_substeps{40, 80, 160, 320, 640};  ///< per 1/60 s frame
+  std::vector<int> xpbd_iterations{2, 5, 20};
+  std::vector<int> vbd_substeps{1, 2, 5, 10, 20};
+  std::vector<int> vbd_grain_iterations{5, 20, 50};
+
+  /// Two coarse resolutions and two depths, for CI (seconds).
+  static ContactStudySettings quick();
+};
+
+/// One row of contact_hertz.csv.
+struct HertzRow {
+  std::string solver;  ///< "reference" or "vbd"
+  int vertices = 0, tets = 0;
+  double depth = 0.0;        ///< d [m]
+  double force = 0.0;        ///< F on the held face [N]
+  double hertz = 0.0;        ///< (4/3) E* √R d^{3/2} [N]
+  double error = 0.0;        ///< (F − Hertz) / Hertz
+  double seconds = 0.0;      ///< wall time of this depth's solve
+  double fastest = 0.0;      ///< vbd: fastest particle at the end [m/s]; reference: 0
+};
+
+/// One row of contact_grain.csv.
+struct GrainContactRow {
+  std::string method;  ///< "xpbd" or "vbd"
+  int substeps = 0, iterations = 0;
+  bool stable = false;         ///< finite, no inverted tet, slower than 1 cm/s at the end
+  double shape_error = 0.0;    ///< RMS distance to the reference's rest shape / grain length
+  double force_error = 0.0;    ///< ‖f − f_ref‖ / ‖f_ref‖ over particles
+  double wall = 0.0;           ///< [s per simulated second]
+};
+
+std::vector<GrainContactRow> run_grain_contact(const ContactStudySettings& settings);
+
+/// Throws std::invalid_argument naming the setting that is out of range.
+void validate(const ContactStudySettings& settings);
+
+std::vector<HertzRow> run_hertz(const ContactStudySettings& settings);
+
+void contact_study_command(const ContactStudySettings& settings, const std::filesystem::path& folder);
+
+}  // namespace rice::experiments

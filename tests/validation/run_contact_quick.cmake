@@ -1,0 +1,17 @@
+# Runs `rice study contact --quick` into OUT and checks that its tables, plots and run info are
+# there. Called by CTest (tests/CMakeLists.txt) with -DRICE=<rice binary> -DOUT=<folder>.
+file(REMOVE_RECURSE "${OUT}")
+execute_process(COMMAND "${RICE}" study contact --quick --out "${OUT}" RESULT_VARIABLE result)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "rice study contact --quick exited with ${result}")
+endif()
+foreach(name contact_hertz.csv contact_grain.csv run_info.txt)
+  if(NOT EXISTS "${OUT}/${name}")
+    message(FATAL_ERROR "missing ${OUT}/${name}")
+  endif()
+endforeach()
+file(STRINGS "${OUT}/contact_hertz.csv" rows)
+list(LENGTH rows count)
+if(count LESS 9)
+  message(FATAL_ERROR "contact_hertz.csv has only ${count} lines")
+endif()
