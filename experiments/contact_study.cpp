@@ -2,6 +2,7 @@
 #include "experiments/contact_study.hpp"
 
 #include <algorithm>
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <chrono>
 #include <cmath>
@@ -191,33 +192,52 @@ std::vector<HertzRow> vbd_rows(const ContactStudySettings& s, const grains::Volu
   return rows;
 }
 
-/// The grain as a model at positions x: its tets, a frictionless ground, gravity.
-xpbd::Model grain_model(const ContactStudySettings& s, const grains::Grain& grain, const xpbd::Positions& x) {
-  const xpbd::TetMesh mesh{grain.simulation.V, grain.simulation.T};
+/// What rests on the ground: a procedural grain's tet mesh, or a box of a grain's size.
+struct RestingBody {
+  xpbd::TetMesh mesh;
+  double density = 0.0;
+};
+
+RestingBody resting_body(const ContactStudySettings& s) {
+  if (s.box_grain) {
+    RestingBody body{xpbd::make_box_tet_mesh(Vec3(7e-3, 3e-3, 2e-3), 4, 2, 1), s.density};
+    return body;
+  }
+  grains::GrainRecipe recipe;
+  recipe.cultivar = grains::cultivar_by_name("japonica");
+  const grains::Grain grain = grains::make_grain(recipe, s.grain_seed);
+  return {xpbd::TetMesh{grain.simulation.V, grain.simulation.T}, grain.simulation_density};
+}
+
+/// The body as a model at positions x: its tets, a frictionless ground, gravity.
+xpbd::Model ground_model(const ContactStudySettings& s, const RestingBody& body, const xpbd::Positions& x) {
   xpbd::Model model;
-  model.particles = xpbd::make_particles(mesh, grain.simulation_density);
-  xpbd::add_neo_hookean_tets(model, mesh, xpbd::lame_from_young_poisson(s.young, s.poisson));
+  model.particles = xpbd::make_particles(body.mesh, body.density);
+  xpbd::add_neo_hookean_tets(model, body.mesh, xpbd::lame_from_young_poisson(s.young, s.poisson));
   model.particles.x = x;
   model.ground = xpbd::GroundPlane{};
   return model;
 }
 
-/// The undeformed grain turned into the pose it settles into (found by a long run of vertex
-/// block descent with friction, the rotation fitted by Umeyama's method), its lowest point
-/// `lift` above the ground.
-xpbd::Positions settled_pose(const ContactStudySettings& s, const grains::Grain& grain, double lift) {
-  xpbd::Positions rest = grain.simulation.V;
-  rest.col(2).array() -= rest.col(2).minCoeff();
-  xpbd::Model model = grain_model(s, grain, rest);
-  model.ground->static_friction = 0.5;
-  model.ground->dynamic_friction = 0.4;
-  xpbd::Solver solver(model, {.time_step = 1.0 / 60.0, .substeps = 2, .iterations = 30,
-                              .method = xpbd::Method::kVbd, .execution = xpbd::Execution::kSerial});
-  for (int frame = 0; frame < 120; ++frame) solver.step();
+/// The undeformed body turned into a pose where it rests stably, its lowest point `lift` above
+/// the ground: laid with its axis of least spread vertical, then let the reference's static
+/// solve (a minimum of the potential, so a stable pose, not a rocking one) settle it; the
+/// rotation from rest to that state is fitted by Umeyama's method.
+xpbd::Positions resting_pose(const ContactStudySettings& s, const RestingBody& body, double lift) {
+  const xpbd::Positions& rest = body.mesh.V;
+  const xpbd::Positions centred = rest.rowwise() - rest.colwise().mean();
+  const Eigen::SelfAdjointEigenSolver<xpbd::Mat3> axes(centred.transpose() * centred);
+  xpbd::Mat3 flat = axes.eigenvectors().rowwise().reverse().transpose();  // rows: longest axis first
+  if (flat.determinant() < 0.0) flat.row(2) *= -1.0;
+  xpbd::Positions laid = centred * flat.transpose();
+  laid.col(2).array() += lift - laid.col(2).minCoeff();
+  xpbd::Model model = ground_model(s, body, laid);
+  fem::ImplicitSolver(model, {.time_step = 1e-3, .newton = {.tolerance = 1e-10, .max_iterations = 300}},
+                      {.activation_distance = s.barrier_distance, .stiffness = s.barrier_stiffness})
+      .solve_static();
   const Eigen::Matrix4d fit =
-      Eigen::umeyama(Eigen::Matrix3Xd(rest.transpose()), Eigen::Matrix3Xd(model.particles.x.transpose()), false);
-  const xpbd::Mat3 R = fit.topLeftCorner<3, 3>();
-  xpbd::Positions pose = (rest.rowwise() - rest.colwise().mean()) * R.transpose();
+      Eigen::umeyama(Eigen::Matrix3Xd(centred.transpose()), Eigen::Matrix3Xd(model.particles.x.transpose()), false);
+  xpbd::Positions pose = centred * xpbd::Mat3(fit.topLeftCorner<3, 3>()).transpose();
   pose.col(2).array() += lift - pose.col(2).minCoeff();
   return pose;
 }
@@ -246,12 +266,10 @@ double shape_distance(const xpbd::Positions& a, const xpbd::Positions& b) {
 
 std::vector<GrainContactRow> run_grain_contact(const ContactStudySettings& s) {
   validate(s);
-  grains::GrainRecipe recipe;
-  recipe.cultivar = grains::cultivar_by_name("japonica");
-  const grains::Grain grain = grains::make_grain(recipe, s.grain_seed);
-  const xpbd::Positions pose = settled_pose(s, grain, 0.5 * s.barrier_distance);
-  const double length = (grain.simulation.V.colwise().maxCoeff() - grain.simulation.V.colwise().minCoeff()).maxCoeff();
-  xpbd::Model reference = grain_model(s, grain, pose);
+  const RestingBody body = resting_body(s);
+  const xpbd::Positions pose = resting_pose(s, body, 0.5 * s.barrier_distance);
+  const double length = (body.mesh.V.colwise().maxCoeff() - body.mesh.V.colwise().minCoeff()).maxCoeff();
+  xpbd::Model reference = ground_model(s, body, pose);
   fem::ImplicitSolver(reference, {.time_step = 1e-3, .newton = {.tolerance = 1e-10, .max_iterations = 300}},
                       {.activation_distance = s.barrier_distance, .stiffness = s.barrier_stiffness})
       .solve_static();
@@ -271,7 +289,7 @@ std::vector<GrainContactRow> run_grain_contact(const ContactStudySettings& s) {
     r.method = jobs[j].method == xpbd::Method::kVbd ? "vbd" : "xpbd";
     r.substeps = jobs[j].substeps;
     r.iterations = jobs[j].iterations;
-    xpbd::Model model = grain_model(s, grain, pose);
+    xpbd::Model model = ground_model(s, body, pose);
     xpbd::Solver solver(model, {.time_step = 1.0 / 60.0, .substeps = r.substeps, .iterations = r.iterations,
                                 .method = jobs[j].method, .execution = xpbd::Execution::kSerial});
     const auto start = Clock::now();
@@ -284,7 +302,7 @@ std::vector<GrainContactRow> run_grain_contact(const ContactStudySettings& s) {
     r.wall = seconds_since(start);
     const double nan = std::numeric_limits<double>::quiet_NaN();
     r.stable = finite &&
-               xpbd::tet_volumes(model.particles.x, xpbd::Tets(grain.simulation.T)).minCoeff() > 0.0 &&
+               xpbd::tet_volumes(model.particles.x, body.mesh.T).minCoeff() > 0.0 &&
                model.particles.v.rowwise().norm().maxCoeff() < 1e-2;
     r.shape_error = finite ? shape_distance(model.particles.x, reference.particles.x) / length : nan;
     r.force_error = finite ? (holding_forces(model) - reference_forces).norm() / reference_forces.norm() : nan;
