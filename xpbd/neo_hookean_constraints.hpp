@@ -35,6 +35,16 @@ inline Mat3 neo_hookean_deviatoric_dF(const Mat3& F) {
 /// ∂²C_D/∂F² = (I₉ − f fᵀ / ‖f‖²) / ‖f‖ with f = vec(F).
 Mat9 neo_hookean_deviatoric_d2F(const Mat3& F);
 
+/// ∂²C_D/∂x_k² for the particle with stencil weights b (tet_stencil.hpp): the contraction of
+/// ∂²C_D/∂F² with b, (‖b‖² I − (F b)(F b)ᵀ / ‖F‖²) / ‖F‖, without forming the 9 × 9 matrix
+/// (zero at F = 0).
+inline Mat3 neo_hookean_deviatoric_vertex_hessian(const Mat3& F, const Vec3& b) {
+  const double norm = F.norm();
+  if (!(norm > 0.0)) return Mat3::Zero();
+  const Vec3 Fb = F * b;
+  return (b.squaredNorm() * Mat3::Identity() - Fb * Fb.transpose() / (norm * norm)) / norm;
+}
+
 // --- hydrostatic C_H = det F − γ ---------------------------------------------------------
 
 inline double neo_hookean_hydrostatic_value(const Mat3& F, double gamma) {

@@ -149,7 +149,7 @@ void VertexBlockDescent::solve_particle(Model& model, const Positions& y, int i)
     gradient += force[0] * gD + force[1] * gH;
     // ∂²C_H/∂x_i² = 0: det(F + δbᵀ) is linear in δ (the matrix determinant lemma).
     hessian += (k[0] + damping[0]) * gD * gD.transpose() + (k[1] + damping[1]) * gH * gH.transpose() +
-               force[0] * vertex_hessian(neo_hookean_deviatoric_d2F(F), b);
+               force[0] * neo_hookean_deviatoric_vertex_hessian(F, b);
     if (t.strain_rate_damping > 0.0) {
       const Mat3& F_start = F_start_[corners_[c].tet];
       const double scale = t.strain_rate_damping * t.rest_volume / h_;  // τV/h of Ψ^E
@@ -172,8 +172,14 @@ void VertexBlockDescent::solve_particle(Model& model, const Positions& y, int i)
     position(x, i) += ground_contact_step(*model.ground, xi, position(*x_start_, i), system, newton, gradient);
     return;
   }
-  // Backtracking: E is not convex (the Rayleigh term of C_D, large strains), so a full
-  // Newton step can raise it. Halve until it does not; after eight halvings, stay.
+  // In one particle's coordinates E is a convex quadratic (‖F‖² is, det F is affine in them,
+  // the strain-rate damping is quadratic), so the Newton step is its minimiser; only the
+  // constraints' Rayleigh term (C_D − C_D(xⁿ))², not convex where C_D < C_D(xⁿ), can make the
+  // step raise E. Then halve it until it does not; after eight halvings, stay.
+  if (!constraint_damping_) {
+    position(x, i) += step;
+    return;
+  }
   const double energy = particle_energy(model, y, i, xi);
   int halvings = 0;
   while (particle_energy(model, y, i, xi + step) > energy) {

@@ -12,12 +12,12 @@
 //
 //   H_i Δx_i = −∇_i E,    H_i = m_i/h² I + Σ_e ∂²E_e/∂x_i².
 //
-// A step that would raise E is halved until it does not, so every sweep lowers E. Particles
-// of one colour share no tet and move in parallel; a fixed point is a stationary point of E,
-// i.e. the reference's backward-Euler step. The blocks ∂²U_e/∂x_i² are positive
-// semi-definite for this energy (μV‖b‖² I from C_D, λV (cof F b)(cof F b)ᵀ from C_H, because
-// det(F + δbᵀ) is linear in δ); only the Rayleigh term of C_D can make H_i indefinite, and
-// then H_i − m_i/h² I is projected onto the PSD cone (its eigenvalues clamped at zero).
+// Particles of one colour share no tet and move in parallel; a fixed point is a stationary
+// point of E, i.e. the reference's backward-Euler step. In one particle's coordinates E is a
+// convex quadratic (‖F‖² is, det F is affine in them: μV‖b‖² I and λV (cof F b)(cof F b)ᵀ
+// are its Hessian blocks) unless the constraints' Rayleigh damping is on: its C_D term can
+// make H_i indefinite, and then H_i − m_i/h² I is projected onto the PSD cone and a step that
+// would raise E is halved until it does not. Every sweep lowers E.
 //
 // A ground plane (Model::ground) is a constraint of each particle's step. When the Newton
 // step would end below the plane, the normal force f_n is that of the step's minimiser on the
@@ -26,11 +26,9 @@
 // cone |f_t| ≤ μ_s f_n, and otherwise slides on the plane against kinetic friction μ_k f_n
 // along f_t. (Taking f_n from the sticking reaction instead, an anisotropic H made it negative
 // at load-bearing particles, which then slid without friction: a grain kept circling at
-// 6 mm/s.) Handled after the sweep instead, the ground would move particles that the
-// sweep's later particles had already answered, and the sweeps' fixed point would not be the
-// rest state (a grain resting at h = 1/60 s stood 10% taller with 20 sweeps); friction judged
-// by displacement (slip against μ·depth, as the XPBD projection does) let a body resting at
-// h = 1/60 s creep at 3.6 mm/s, because the particle's Hessian is far from isotropic there.
+// 6 mm/s.) Handled after the sweep instead, the ground would move particles that the sweep's
+// later particles had already answered, and the sweeps' fixed point would not be the rest
+// state (a grain resting at h = 1/60 s stood 10% taller with 20 sweeps).
 //
 // The solver (solver.hpp) runs K sweeps per substep for Method::kVbd.
 #pragma once
