@@ -357,10 +357,10 @@ std::vector<HertzRow> run_hertz(const ContactStudySettings& s) {
   return rows;
 }
 
-void contact_study_command(const ContactStudySettings& s, const std::filesystem::path& folder) {
-  validate(s);
-  make_output_folder(folder);
-  const auto start = Clock::now();
+namespace {
+
+/// Runs the Hertz part and writes contact_hertz.csv and its plot.
+void hertz_outputs(const ContactStudySettings& s, const std::filesystem::path& folder) {
   const std::vector<HertzRow> rows = run_hertz(s);
   CsvTable table({"solver", "vertices", "tets", "depth_rel", "depth_m", "force_n", "hertz_n", "rel_error", "seconds",
                   "fastest_m_per_s"});
@@ -411,7 +411,10 @@ plot 'contact_hertz.csv' using (strcol(1) eq 'reference' ? $2 : 1/0):(abs($8)):(
      '' using (strcol(1) eq 'vbd' ? $2 : 1/0):(abs($8)) with points pt 6 ps 2 title 'vertex block descent'
 unset multiplot
 )");
-  stop_point();
+}
+
+/// Runs the grain part and writes contact_grain.csv and its plot.
+void grain_outputs(const ContactStudySettings& s, const std::filesystem::path& folder) {
   const std::vector<GrainContactRow> grain_rows = run_grain_contact(s);
   CsvTable grain_table({"method", "substeps", "iterations", "h_s", "stable", "shape_error_rel", "force_error_rel",
                         "wall_s_per_sim_s"});
@@ -454,6 +457,17 @@ do for [col in '6 7'] {
 }
 unset multiplot
 )");
+}
+
+}  // namespace
+
+void contact_study_command(const ContactStudySettings& s, const std::filesystem::path& folder) {
+  validate(s);
+  make_output_folder(folder);
+  const auto start = Clock::now();
+  hertz_outputs(s, folder);
+  stop_point();
+  grain_outputs(s, folder);
   stop_point();
   write_file_atomically(folder / "run_info.txt",
                         run_info({{"study", "contact"},
