@@ -31,8 +31,9 @@ enum class Method {
   kPbd,   ///< classic PBD: stiffness k ∈ [0, 1] per projection, no λ; kept to show what XPBD fixes
   /// Vertex block descent on the Neo-Hookean tets' backward-Euler potential
   /// (vertex_block_descent.hpp): K sweeps of per-particle Newton steps, stable at substeps far
-  /// past the tets' wave-crossing time. Attachments, the ground and contacts stay projections
-  /// after each sweep; springs and tet volumes are not supported.
+  /// past the tets' wave-crossing time. The ground is a constraint of each particle's step;
+  /// attachments and contacts between bodies stay projections after each sweep; springs and
+  /// tet volumes are not supported.
   kVbd,
 };
 
@@ -120,7 +121,7 @@ class Solver {
   void substep(double h, bool end_of_interval);
   void predict(double h);
   /// Method::kVbd: keeps the prediction as y and starts from the adaptive initial guess of
-  /// Chen et al. 2024 (§3.6): gravity's share of h² g that the particle's last acceleration
+  /// Chen et al. 2024: gravity's share of h² g that the particle's last acceleration
   /// showed, so a resting body is not pushed into what holds it.
   void start_vertex_block_descent(double h);
   /// Per particle and per rigid body: 1 when its body sleeps (sleeping.hpp); empty when
