@@ -457,7 +457,7 @@ set xlabel 'wall time per simulated second [s]'
 set cblabel 'log2 substeps per frame'
 set key bottom left
 do for [col in '6 7'] {
-  set ylabel (col eq '6' ? 'RMS distance to the reference rest shape / grain length' : '|f − f_ref| / |f_ref| (holding forces)')
+  set ylabel (col eq '6' ? 'RMS distance to the reference rest shape / grain length' : '|f − f_{ref}| / |f_{ref}| (holding forces)')
   plot 'contact_grain.csv' using (strcol(1) eq 'xpbd' && $5 == 1 ? $8 : 1/0):(column(col+0)):(log($2)/log(2)) with points pt 7 ps 1.4 palette title 'XPBD (stable runs)', \
        '' using (strcol(1) eq 'vbd' && $5 == 1 ? $8 : 1/0):(column(col+0)):(log($2)/log(2)) with points pt 5 ps 1.4 palette title 'vertex block descent'
 }

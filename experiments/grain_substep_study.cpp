@@ -124,7 +124,16 @@ void grain_substep_study_command(const GrainSubstepStudySettings& s, const std::
   const std::string title = "A soft grain at rest: XPBD stable from " + describe(largest_stable[0]) +
                             ", vertex block descent from " + describe(largest_stable[1]) + " substeps per frame";
   std::printf("\n%s\n", title.c_str());
-  render_plot(folder, "grain_substeps", R"(set terminal pngcairo size 1000,650
+  const auto words = [](const std::vector<int>& counts) {
+    std::string list;
+    for (const int k : counts) {
+      if (!list.empty()) list += ' ';
+      list += std::to_string(k);
+    }
+    return list;
+  };
+  // One colour and point type per method and K; the labels are the substep counts N.
+  render_plot(folder, "grain_substeps", R"(set terminal pngcairo size 1200,700
 set output 'grain_substeps.png'
 set datafile separator ','
 set datafile missing 'nan'
@@ -133,18 +142,12 @@ set format x '10^{%L}'
 set format y '10^{%L}'
 set xlabel 'wall time per simulated second [s]'
 set ylabel 'RMS distance of the rest state to the finest VBD run / grain length'
-set title ')" + title + R"('
-set key outside right
-plot for [K in ')" + [&] {
-    std::string list;
-    for (const int k : s.xpbd_iterations) list += (list.empty() ? "" : " ") + std::to_string(k);
-    return list;
-  }() + R"('] 'grain_substeps.csv' using (strcol(1) eq 'xpbd' && $3 == K+0 && $5 == 1 ? $9 : 1/0):8:(sprintf('%d', $2)) with labels point pt 7 offset 0.8,0.8 title sprintf('XPBD, K = %s (labels: N)', K), \
-     for [K in ')" + [&] {
-    std::string list;
-    for (const int k : s.vbd_iterations) list += (list.empty() ? "" : " ") + std::to_string(k);
-    return list;
-  }() + R"('] 'grain_substeps.csv' using (strcol(1) eq 'vbd' && $3 == K+0 && $5 == 1 ? $9 : 1/0):8:(sprintf('%d', $2)) with labels point pt 5 offset 0.8,-0.8 title sprintf('VBD, K = %s', K)
+set title ")" + title + R"(" noenhanced
+set key bottom left
+X = ')" + words(s.xpbd_iterations) + R"('
+V = ')" + words(s.vbd_iterations) + R"('
+plot for [i=1:words(X)] 'grain_substeps.csv' using (strcol(1) eq 'xpbd' && $3 == word(X, i)+0 && $5 == 1 ? $9 : 1/0):8:(sprintf('%d', $2)) with labels point pt 7 lc i offset 0.8,0.8 title sprintf('XPBD, K = %s (labels: N)', word(X, i)), \
+     for [i=1:words(V)] 'grain_substeps.csv' using (strcol(1) eq 'vbd' && $3 == word(V, i)+0 && $5 == 1 ? $9 : 1/0):8:(sprintf('%d', $2)) with labels point pt (4 + i) lc (words(X) + i) offset 0.8,-0.8 title sprintf('vertex block descent, K = %s', word(V, i))
 )");
   stop_point();
   write_file_atomically(folder / "run_info.txt", run_info({{"study", "grain-substeps"},
