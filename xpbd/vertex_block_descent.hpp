@@ -48,15 +48,12 @@ class VertexBlockDescent {
   explicit VertexBlockDescent(const Model& model);
 
   /// Records what the potential of a step from `x_start` needs: C(xⁿ) per tet for Ψ^C and Fⁿ
-  /// for Ψ^E (only where those damping terms are on).
-  void begin_step(const Model& model, const Positions& x_start, double h);  ///< keeps a reference to x_start
+  /// for Ψ^E (only where those damping terms are on). Keeps a reference to x_start.
+  void begin_step(const Model& model, const Positions& x_start, double h);
 
   /// One Gauss–Seidel sweep over the particles of tets, colour by colour. Pinned particles
   /// (w = 0) and those marked in `frozen` (sleeping bodies; may be empty) stay.
   void sweep(Model& model, const Positions& y, bool parallel, const std::vector<char>& frozen) const;
-
-  /// Whether any tet has strain-rate damping.
-  bool has_strain_rate_damping() const { return strain_rate_damping_; }
 
  private:
   struct Corner {
