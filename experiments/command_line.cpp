@@ -192,6 +192,8 @@ struct CommandLine::Commands {
         ->capture_default_str();
     pour_cmd->add_option("--iterations", pour.iterations, "Gauss-Seidel sweeps per substep")
         ->check(number_in(1, 1000))->capture_default_str();
+    pour_cmd->add_flag("--vbd", pour.vertex_block_descent,
+                       "soft grains by vertex block descent; experimental: a pile does not settle yet (README)");
     pour_cmd->add_option("--young", pour.young, "soft grains' Young's modulus [Pa]")->check(number_in(1e3, 1e9))
         ->capture_default_str();
     pour_cmd->add_option("--soak-minutes", pour.soak_minutes, "soaking time [min]")

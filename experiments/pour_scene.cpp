@@ -282,6 +282,7 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   solver_settings.time_step = 1.0 / settings.fps;
   solver_settings.substeps = substeps_per_frame(settings);
   solver_settings.iterations = settings.iterations;
+  if (settings.vertex_block_descent) solver_settings.method = xpbd::Method::kVbd;
   xpbd::Solver solver(model, solver_settings);
 
   CsvTable stats({"frame", "time_s", "wall_s", "awake", "candidates", "contacts", "bonds", "max_penetration_m", "kinetic_energy_j",
@@ -428,6 +429,7 @@ unset multiplot
                 {"fps", cell(settings.fps)},
                 {"substeps", cell(substeps_per_frame(settings))},
                 {"iterations", cell(settings.iterations)},
+                {"method", settings.vertex_block_descent ? "vbd" : "xpbd"},
                 {"young_pa", cell(settings.young)},
                 {"rayleigh_time_s", cell(rayleigh_time)},
                 {"cohesion", settings.cohesion ? "on" : "off"},

@@ -47,6 +47,10 @@ struct PourSettings {
   /// at 360, and at 480 all but 7 sleep by frame 90; README "Known limits").
   int substeps = 0;
   int iterations = 1;
+  /// Soft grains' tets by vertex block descent (xpbd::Method::kVbd) instead of XPBD's
+  /// projections. Experimental: contacts between grains are still projected after each sweep,
+  /// and a pile does not settle (README "Known limits").
+  bool vertex_block_descent = false;
   double young = 1e5;  ///< soft grains [Pa]: cooked rice kernels are soft (0.1–1 MPa; ESTIMATE)
   double poisson = 0.3;
   double soak_minutes = 120.0;     ///< sets damping (soft) and cohesion
