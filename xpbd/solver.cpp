@@ -29,11 +29,6 @@ Coloring color_constraints(const std::vector<Constraint>& constraints, int parti
   return greedy_coloring(ids, Arity, particle_count);
 }
 
-Eigen::Map<Vec3> position(Positions& x, int i) { return Eigen::Map<Vec3>(x.data() + 3 * i); }
-Eigen::Map<const Vec3> position(const Positions& x, int i) {
-  return Eigen::Map<const Vec3>(x.data() + 3 * i);
-}
-
 /// The 12 coordinates of a tetrahedron's four particles.
 Vec12 tet_stencil(const Positions& x, const std::array<int, 4>& id) {
   return stack(position(x, id[0]), position(x, id[1]), position(x, id[2]), position(x, id[3]));

@@ -31,13 +31,6 @@ Mat12 hessian_from_d2F(const Mat9& d2CdF2, const Mat3& Dm_inv) {
   return B.transpose() * d2CdF2 * B;
 }
 
-Mat3 vertex_hessian(const Mat9& d2CdF2, const Vec3& b) {
-  Mat3 H = Mat3::Zero();
-  for (int c = 0; c < 3; ++c)
-    for (int d = 0; d < 3; ++d) H += (b[c] * b[d]) * d2CdF2.block<3, 3>(3 * c, 3 * d);
-  return H;
-}
-
 Mat9 determinant_hessian(const Mat3& F) {
   // det F = f1 · (f2 × f3); block (i, j) is ∂(∂det/∂f_i)/∂f_j.
   const Mat3 S1 = cross_matrix(F.col(0));

@@ -59,10 +59,6 @@ inline Vec3 stencil_weights(const Mat3& Dm_inv, int k) {
 /// ∂C/∂x_k = (∂C/∂F) b_k, one particle's part of gradient_from_dF.
 inline Vec3 vertex_gradient(const Mat3& dCdF, const Vec3& b) { return dCdF * b; }
 
-/// ∂²C/∂x_k² = Σ_{c,c'} b_c b_c' (∂²C/∂F²)[block (c, c')], the diagonal 3×3 block of
-/// hessian_from_d2F for particle k with weights b = b_k (vec F column-major, index a + 3c).
-Mat3 vertex_hessian(const Mat9& d2CdF2, const Vec3& b);
-
 /// ∂vec(F)/∂x (9×12), constant for a linear tetrahedron.
 Eigen::Matrix<double, 9, 12> dF_dx(const Mat3& Dm_inv);
 

@@ -24,6 +24,12 @@ using Positions = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 /// #T by 4 vertex indices of tetrahedra.
 using Tets = Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor>;
 
+/// Particle i's row of a Positions matrix as a 3-vector view.
+inline Eigen::Map<Vec3> position(Positions& x, int i) { return Eigen::Map<Vec3>(x.data() + 3 * i); }
+inline Eigen::Map<const Vec3> position(const Positions& x, int i) {
+  return Eigen::Map<const Vec3>(x.data() + 3 * i);
+}
+
 /// Stacks four particle positions into one 12-vector (the stencil of a tetrahedron).
 inline Vec12 stack(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3) {
   Vec12 x;

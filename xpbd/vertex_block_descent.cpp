@@ -13,9 +13,6 @@
 namespace rice::xpbd {
 namespace {
 
-Eigen::Map<Vec3> position(Positions& x, int i) { return Eigen::Map<Vec3>(x.data() + 3 * i); }
-Eigen::Map<const Vec3> position(const Positions& x, int i) { return Eigen::Map<const Vec3>(x.data() + 3 * i); }
-
 Mat3 deformation(const Positions& x, const NeoHookeanTet& t) {
   const auto& id = t.particles;
   return edge_matrix(position(x, id[0]), position(x, id[1]), position(x, id[2]), position(x, id[3])) * t.Dm_inv;
