@@ -110,7 +110,7 @@ struct CommandLine::Commands {
   ContactStudySettings contact;
   std::string contact_out = "out/contact";
   bool contact_quick = false;
-  CLI::Option *contact_depths_opt = nullptr, *contact_resolutions_opt = nullptr, *contact_steps_opt = nullptr;
+  CLI::Option *contact_depths_opt = nullptr, *contact_edges_opt = nullptr, *contact_steps_opt = nullptr;
   GrainSubstepStudySettings grain_substeps;
   std::string grain_substeps_out = "out/grain-substeps";
   PourSubstepStudySettings pour_substeps;
@@ -299,9 +299,9 @@ struct CommandLine::Commands {
     contact_cmd->add_flag("--quick", contact_quick, "two coarse meshes and two depths, for CI (seconds)");
     contact_depths_opt = contact_cmd->add_option("--depths", contact.depths, "depths d/R, increasing")
                              ->check(number_in(1e-4, 0.49))->capture_default_str();
-    contact_resolutions_opt = contact_cmd->add_option("--resolutions", contact.resolutions,
-                                                      "vertex counts of the half sphere's tet mesh")
-                                  ->check(number_in(20, 200000))->capture_default_str();
+    contact_edges_opt = contact_cmd->add_option("--contact-edges", contact.contact_edges,
+                                                "edge lengths of the half sphere's mesh where it touches / R, coarse to fine")
+                            ->check(number_in(0.005, 0.25))->capture_default_str();
     contact_cmd->add_option("--young", contact.young, "Young's modulus [Pa]")->check(number_in(1, 1e12))
         ->capture_default_str();
     contact_cmd->add_option("--vbd-iterations", contact.vbd_iterations, "sweeps per step")
@@ -533,7 +533,7 @@ struct CommandLine::Commands {
   ContactStudySettings contact_settings() const {
     ContactStudySettings settings = contact_quick ? ContactStudySettings::quick() : ContactStudySettings{};
     if (contact_depths_opt->count()) settings.depths = contact.depths;
-    if (contact_resolutions_opt->count()) settings.resolutions = contact.resolutions;
+    if (contact_edges_opt->count()) settings.contact_edges = contact.contact_edges;
     settings.young = contact.young;
     settings.vbd_iterations = contact.vbd_iterations;
     if (contact_steps_opt->count()) settings.vbd_steps = contact.vbd_steps;

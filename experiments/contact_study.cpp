@@ -46,9 +46,9 @@ void stitch(const std::vector<int>& a, const std::vector<int>& b, std::vector<Ei
 }
 
 /// The closed surface of the lower half of the sphere of radius R centred at (0, 0, R): `rings`
-/// rings of 6k vertices from the pole to the equator, then the flat face at z = R the same way
-/// back to its centre. Outward oriented.
-grains::SurfaceMesh half_sphere_surface(double R, int rings) {
+/// rings of 6k vertices from the pole to the equator, then the flat face at z = R back to its
+/// centre in `face_rings` rings. Outward oriented.
+grains::SurfaceMesh half_sphere_surface(double R, int rings, int face_rings) {
   std::vector<Vec3> points{Vec3::Zero()};
   std::vector<std::vector<int>> sequence{{0}};
   const auto add_ring = [&](int count, const auto& place) {
@@ -65,8 +65,10 @@ grains::SurfaceMesh half_sphere_surface(double R, int rings) {
       return Vec3(R * std::sin(alpha) * std::cos(phi), R * std::sin(alpha) * std::sin(phi), R - R * std::cos(alpha));
     });
   }
-  for (int k = rings - 1; k >= 1; --k)
-    add_ring(6 * k, [&](double phi) { return Vec3(R * k / rings * std::cos(phi), R * k / rings * std::sin(phi), R); });
+  for (int k = face_rings - 1; k >= 1; --k)
+    add_ring(6 * k, [&](double phi) {
+      return Vec3(R * k / face_rings * std::cos(phi), R * k / face_rings * std::sin(phi), R);
+    });
   sequence.push_back({static_cast<int>(points.size())});
   points.emplace_back(0.0, 0.0, R);
   std::vector<Eigen::Vector3i> triangles;
@@ -84,16 +86,18 @@ grains::SurfaceMesh half_sphere_surface(double R, int rings) {
   return mesh;
 }
 
-/// The half sphere's tet mesh with about `target` vertices.
-grains::VolumeMesh half_sphere_mesh(double R, int target) {
-  grains::SimulationMeshParameters p;
-  p.min_vertices = std::max(4, static_cast<int>(0.8 * target));
-  p.max_vertices = std::max(p.min_vertices, static_cast<int>(1.25 * target));
-  const double shrink = std::cbrt(40.0 / target);  // the defaults give about 40 vertices
-  p.edge_size *= shrink;
-  p.facet_distance *= shrink;
-  const int rings = std::max(6, static_cast<int>(std::lround(2.0 * std::cbrt(target))));
-  return grains::make_simulation_mesh(half_sphere_surface(R, rings), p, 7);
+/// The half sphere's tet mesh graded towards the pole, where it touches the ground: edges of
+/// `contact_edge` within `fine_radius` of it, growing by `grading` per unit distance beyond,
+/// at most R/4. (Mesh_3 bounds circumradii: a regular tet's is √6/4 of its edge.) The surface
+/// it is cut from has rings a third of that edge apart near the pole: its facets' sag from
+/// the sphere, s²/8R, stays under 1e-3 of the smallest depth.
+grains::VolumeMesh half_sphere_mesh(double R, double contact_edge, double fine_radius, double grading) {
+  const int rings = std::max(24, static_cast<int>(std::ceil(0.5 * std::numbers::pi * R / (contact_edge / 3.0))));
+  const auto circumradius = [=](const Vec3& p) {
+    const double edge = contact_edge + grading * std::max(0.0, p.norm() - fine_radius);
+    return std::sqrt(6.0) / 4.0 * std::min(0.25 * R, edge);
+  };
+  return grains::make_graded_mesh(half_sphere_surface(R, rings, 24), circumradius, 0.005 * R, {}, 7);
 }
 
 /// The half sphere as a model: held flat face, ground at z = 0, no gravity; its pole `lift`
@@ -123,8 +127,15 @@ HalfSphere make_half_sphere(const ContactStudySettings& s, const grains::VolumeM
   return body;
 }
 
-void lower_face(HalfSphere& body, double by) {
-  for (size_t k = 0; k < body.face.size(); ++k) body.model.particles.x(body.face[k], 2) = body.face_z[k] - by;
+/// Lowers the held face to `by` below its start and moves the other particles down with it,
+/// none below `floor`: a start near the loaded shape (a flattened cap) rather than a face
+/// pushed into an undeformed body, which a barrier's line search, never crossing the
+/// ground, would walk down in hundreds of Newton steps.
+void lower_face(HalfSphere& body, double by, double floor) {
+  auto& x = body.model.particles.x;
+  const double move = (body.face_z[0] - by) - x(body.face[0], 2);
+  for (int i = 0; i < x.rows(); ++i) x(i, 2) = std::max(floor, x(i, 2) + move);
+  for (size_t k = 0; k < body.face.size(); ++k) x(body.face[k], 2) = body.face_z[k] - by;
 }
 
 /// −Σ ∂U/∂z over the held face: the force with which the body pushes the face up.
@@ -135,9 +146,34 @@ double face_force(const HalfSphere& body) {
   return force;
 }
 
+/// The contact radius a from the ground's forces f_i on the particles that touch it (those
+/// within `touching` of it; f_i = ∂U/∂z_i, what holds such a particle at rest): Hertz's
+/// pressure p ∝ √(1 − r²/a²) has the second moment ∫p r² dA / ∫p dA = (2/5) a², so
+/// a = √(5/2 Σ f_i r_i² / Σ f_i), r_i measured from the forces' centre. Unlike the approach d,
+/// a is set near the contact, whatever holds the body far from it.
+double contact_radius(const HalfSphere& body, double touching) {
+  const xpbd::Positions gradient = xpbd::elastic_energy_gradient(body.model);
+  const auto& x = body.model.particles.x;
+  std::vector<int> touch;
+  for (int i = 0; i < x.rows(); ++i)
+    if (x(i, 2) < touching && gradient(i, 2) > 0.0) touch.push_back(i);
+  double total = 0.0;
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  for (const int i : touch) {
+    total += gradient(i, 2);
+    centre += gradient(i, 2) * x.row(i).head<2>().transpose();
+  }
+  if (!(total > 0.0)) return 0.0;
+  centre /= total;
+  double moment = 0.0;
+  for (const int i : touch) moment += gradient(i, 2) * (x.row(i).head<2>().transpose() - centre).squaredNorm();
+  return std::sqrt(2.5 * moment / total);
+}
+
+double effective_modulus(const ContactStudySettings& s) { return s.young / (1.0 - s.poisson * s.poisson); }
+
 double hertz_force(const ContactStudySettings& s, double d) {
-  const double effective = s.young / (1.0 - s.poisson * s.poisson);
-  return 4.0 / 3.0 * effective * std::sqrt(s.radius) * std::pow(d, 1.5);
+  return 4.0 / 3.0 * effective_modulus(s) * std::sqrt(s.radius) * std::pow(d, 1.5);
 }
 
 HertzRow row(const ContactStudySettings& s, const char* solver, const HalfSphere& body, double d, double force,
@@ -150,6 +186,9 @@ HertzRow row(const ContactStudySettings& s, const char* solver, const HalfSphere
   r.force = force;
   r.hertz = hertz_force(s, d);
   r.error = (force - r.hertz) / r.hertz;
+  r.contact_radius = contact_radius(body, 0.01 * d);
+  r.hertz_at_radius = 4.0 / 3.0 * effective_modulus(s) * std::pow(r.contact_radius, 3) / s.radius;
+  r.radius_error = (force - r.hertz_at_radius) / r.hertz_at_radius;
   r.seconds = seconds;
   return r;
 }
@@ -165,7 +204,7 @@ std::vector<HertzRow> reference_rows(const ContactStudySettings& s, const grains
   for (const double depth : s.depths) {
     stop_point();
     const double d = depth * s.radius;
-    lower_face(body, d + gap);
+    lower_face(body, d + gap, gap);
     const auto start = Clock::now();
     const fem::NewtonReport report = solver.solve_static();
     rows.push_back(row(s, "reference", body, d, report.converged ? face_force(body) : std::nan(""),
@@ -182,7 +221,7 @@ std::vector<HertzRow> vbd_rows(const ContactStudySettings& s, const grains::Volu
   for (const double depth : s.depths) {
     stop_point();
     const double d = depth * s.radius;
-    lower_face(body, d);
+    lower_face(body, d, 0.0);
     const auto start = Clock::now();
     for (int step = 0; step < s.vbd_steps; ++step) solver.step();
     HertzRow r = row(s, "vbd", body, d, face_force(body), seconds_since(start));
@@ -313,7 +352,7 @@ std::vector<GrainContactRow> run_grain_contact(const ContactStudySettings& s) {
 ContactStudySettings ContactStudySettings::quick() {
   ContactStudySettings s;
   s.depths = {0.05, 0.1};
-  s.resolutions = {150, 500};
+  s.contact_edges = {0.16, 0.08};  // both meshes refined to the deepest depth's contact
   s.vbd_steps = 15;
   s.xpbd_substeps = {80, 320};
   s.xpbd_iterations = {5};
@@ -328,10 +367,11 @@ void validate(const ContactStudySettings& s) {
   if (s.depths.empty() || !std::is_sorted(s.depths.begin(), s.depths.end()) || !(s.depths.front() > 0.0) ||
       !(s.depths.back() < 0.5))
     throw std::invalid_argument("contact study: depths must be increasing fractions of the radius in (0, 0.5)");
-  if (s.resolutions.empty())
-    throw std::invalid_argument("contact study: give at least one resolution");
-  for (const int r : s.resolutions)
-    if (r < 20 || r > 200000) throw std::invalid_argument("contact study: resolutions must be in [20, 200000] vertices");
+  if (s.contact_edges.empty())
+    throw std::invalid_argument("contact study: give at least one contact edge");
+  for (const double e : s.contact_edges)
+    if (!(e >= 0.005 && e <= 0.25)) throw std::invalid_argument("contact study: contact edges must be in [0.005, 0.25] R");
+  if (!(s.grading > 0.0 && s.grading <= 2.0)) throw std::invalid_argument("contact study: grading must be in (0, 2]");
   if (!(s.barrier_distance > 0.0) || !(s.barrier_stiffness > 0.0) ||
       !(s.barrier_distance < 0.5 * s.depths.front() * s.radius))
     throw std::invalid_argument("contact study: the barrier's d-hat must be positive and under half the smallest depth");
@@ -344,16 +384,24 @@ void validate(const ContactStudySettings& s) {
 
 std::vector<HertzRow> run_hertz(const ContactStudySettings& s) {
   validate(s);
-  std::vector<grains::VolumeMesh> meshes(s.resolutions.size());
+  std::vector<grains::VolumeMesh> meshes(s.contact_edges.size());
   for_each_item("contact: half-sphere meshes", static_cast<int>(meshes.size()),
-                [&](int r) { meshes[r] = half_sphere_mesh(s.radius, s.resolutions[r]); });
+                [&](int r) { meshes[r] = half_sphere_mesh(s.radius, s.contact_edges[r] * s.radius,
+                                                         1.2 * s.radius * std::sqrt(s.depths.back()), s.grading); });
   std::vector<std::vector<HertzRow>> parts(2 * meshes.size());
   for_each_item("contact: Hertz solves", static_cast<int>(parts.size()), [&](int job) {
     const grains::VolumeMesh& mesh = meshes[job / 2];
-    parts[job] = job % 2 == 0 ? reference_rows(s, mesh) : vbd_rows(s, mesh);
+    if (job % 2 == 0)
+      parts[job] = reference_rows(s, mesh);
+    else if (job / 2 < s.vbd_resolutions)
+      parts[job] = vbd_rows(s, mesh);
   });
   std::vector<HertzRow> rows;
-  for (const auto& part : parts) rows.insert(rows.end(), part.begin(), part.end());
+  for (size_t job = 0; job < parts.size(); ++job)
+    for (HertzRow r : parts[job]) {
+      r.contact_edge = s.contact_edges[job / 2];
+      rows.push_back(r);
+    }
   return rows;
 }
 
@@ -362,35 +410,37 @@ namespace {
 /// Runs the Hertz part and writes contact_hertz.csv and its plot.
 void hertz_outputs(const ContactStudySettings& s, const std::filesystem::path& folder) {
   const std::vector<HertzRow> rows = run_hertz(s);
-  CsvTable table({"solver", "vertices", "tets", "depth_rel", "depth_m", "force_n", "hertz_n", "rel_error", "seconds",
+  CsvTable table({"solver", "contact_edge_rel", "vertices", "tets", "depth_rel", "depth_m", "force_n", "hertz_n",
+                  "rel_error", "contact_radius_m", "hertz_at_radius_n", "radius_rel_error", "seconds",
                   "fastest_m_per_s"});
-  std::printf("\n%-9s %8s %8s %7s %12s %12s %9s %8s\n", "solver", "vertices", "tets", "d/R", "F [N]", "Hertz [N]",
-              "error", "wall [s]");
+  std::printf("\n%-9s %6s %8s %7s %12s %12s %9s %10s %9s %8s\n", "solver", "edge/R", "vertices", "d/R", "F [N]",
+              "Hertz(d)", "error(d)", "a [mm]", "error(a)", "wall [s]");
   for (const HertzRow& r : rows) {
-    table.add_row({r.solver, cell(r.vertices), cell(r.tets), cell(r.depth / s.radius), cell(r.depth), cell(r.force),
-                   cell(r.hertz), cell(r.error), cell(r.seconds), cell(r.fastest)});
-    std::printf("%-9s %8d %8d %7.3f %12.4e %12.4e %8.1f%% %8.2f\n", r.solver.c_str(), r.vertices, r.tets,
-                r.depth / s.radius, r.force, r.hertz, 100.0 * r.error, r.seconds);
+    table.add_row({r.solver, cell(r.contact_edge), cell(r.vertices), cell(r.tets), cell(r.depth / s.radius),
+                   cell(r.depth), cell(r.force), cell(r.hertz), cell(r.error), cell(r.contact_radius),
+                   cell(r.hertz_at_radius), cell(r.radius_error), cell(r.seconds), cell(r.fastest)});
+    std::printf("%-9s %6.3f %8d %7.3f %12.4e %12.4e %8.1f%% %10.4f %8.1f%% %8.2f\n", r.solver.c_str(), r.contact_edge,
+                r.vertices, r.depth / s.radius, r.force, r.hertz, 100.0 * r.error, 1e3 * r.contact_radius,
+                100.0 * r.radius_error, r.seconds);
   }
   write_file_atomically(folder / "contact_hertz.csv", table.text());
-  // The finding: how far the two solvers are apart, and the reference's error against Hertz
-  // at the shallowest depth on the coarsest and the finest mesh.
+  // The finding: the reference's largest error against Hertz at the measured contact radius on
+  // the coarsest and the finest mesh, and how far the two solvers are apart.
+  const auto worst = [&](double edge) {
+    double e = 0.0;
+    for (const HertzRow& r : rows)
+      if (r.solver == "reference" && r.contact_edge == edge) e = std::max(e, std::abs(r.radius_error));
+    return fixed(100.0 * e, 1) + "%";
+  };
   double apart = 0.0;
   for (const HertzRow& a : rows)
     for (const HertzRow& b : rows)
-      if (a.solver == "reference" && b.solver == "vbd" && a.vertices == b.vertices && a.depth == b.depth)
+      if (a.solver == "reference" && b.solver == "vbd" && a.contact_edge == b.contact_edge && a.depth == b.depth)
         apart = std::max(apart, std::abs(b.force - a.force) / a.force);
-  const auto shallow_error = [&](bool finest) {
-    const HertzRow* pick = nullptr;
-    for (const HertzRow& r : rows)
-      if (r.solver == "reference" && r.depth == s.depths.front() * s.radius &&
-          (!pick || (finest ? r.vertices > pick->vertices : r.vertices < pick->vertices)))
-        pick = &r;
-    return fixed(100.0 * pick->error, 0) + "% (" + std::to_string(pick->vertices) + " vertices)";
-  };
-  const std::string title = "Reference and VBD within " + fixed(100.0 * apart, 1) + "% of each other; against Hertz at d = " +
-                            fixed(100.0 * s.depths.front(), 0) + "% R: " + shallow_error(false) + " to " +
-                            shallow_error(true);
+  const std::string title = "Reference force against Hertz at its contact radius: within " +
+                            worst(s.contact_edges.front()) + " (edge " + fixed(s.contact_edges.front(), 3) +
+                            " R) to " + worst(s.contact_edges.back()) + " (edge " + fixed(s.contact_edges.back(), 3) +
+                            " R); VBD within " + fixed(100.0 * apart, 1) + "% of it";
   std::printf("\n%s\n", title.c_str());
   render_plot(folder, "contact_hertz", R"(set terminal pngcairo size 1400,600
 set output 'contact_hertz.png'
@@ -403,18 +453,19 @@ set format y '10^{%L}'
 set xlabel 'depth d [m]'
 set ylabel 'force on the held face [N]'
 set key top left
-E = )" + cell(s.young / (1.0 - s.poisson * s.poisson)) + R"(
+E = )" + cell(effective_modulus(s)) + R"(
 R = )" + cell(s.radius) + R"(
 hertz(d) = 4.0/3.0 * E * sqrt(R) * d**1.5
-set xrange [*:*]
-plot 'contact_hertz.csv' using (strcol(1) eq 'reference' ? $5 : 1/0):6:2 with points pt 7 ps 1.3 palette title 'reference (colour: vertices)', \
-     '' using (strcol(1) eq 'vbd' ? $5 : 1/0):6:2 with points pt 6 ps 2 palette title 'vertex block descent', \
-     '' using 5:(hertz($5)) with lines lw 2 lc rgb 'black' title 'Hertz'
-set xlabel 'vertices of the half sphere'
-set ylabel '|F − Hertz| / Hertz'
+plot 'contact_hertz.csv' using (strcol(1) eq 'reference' ? $6 : 1/0):7:2 with points pt 7 ps 1.3 palette title 'reference (colour: edge / R)', \
+     '' using (strcol(1) eq 'vbd' ? $6 : 1/0):7:2 with points pt 6 ps 2 palette title 'vertex block descent', \
+     '' using 6:(hertz($6)) with lines lw 2 lc rgb 'black' title 'Hertz'
+set xlabel 'mesh edge where the sphere touches / R'
+set ylabel 'force error against Hertz'
+set xrange [*:*] reverse
 set key top right
-plot 'contact_hertz.csv' using (strcol(1) eq 'reference' ? $2 : 1/0):(abs($8)):(sprintf('%.0f%%', 100*$4)) with labels point pt 7 offset 1.5,0 title 'reference (labels: d/R)', \
-     '' using (strcol(1) eq 'vbd' ? $2 : 1/0):(abs($8)) with points pt 6 ps 2 title 'vertex block descent'
+plot 'contact_hertz.csv' using (strcol(1) eq 'reference' ? $2 : 1/0):(abs($12)):(sprintf('%.0f%%', 100*$5)) with labels point pt 7 offset 2,0 title 'reference, at its contact radius a (labels: d/R)', \
+     '' using (strcol(1) eq 'vbd' ? $2 : 1/0):(abs($12)) with points pt 6 ps 2 title 'vertex block descent, at a', \
+     '' using (strcol(1) eq 'reference' ? $2 : 1/0):(abs($9)) with points pt 4 ps 1.2 lc rgb 'gray40' title 'reference, at the approach d (held-face bias)'
 unset multiplot
 )");
 }

@@ -74,6 +74,44 @@ VolumeMesh from_complex(const Complex& complex) {
   return mesh;
 }
 
+/// Mesh_3's criteria take a size field as a functor of (point, dimension, index).
+struct SizeField {
+  using FT = Kernel::FT;
+  const std::function<double(const Vec3&)>* size;
+  template <class Index>
+  FT operator()(const Point& p, int /*dimension*/, const Index& /*index*/) const {
+    return (*size)(Vec3(p.x(), p.y(), p.z()));
+  }
+};
+
+/// One Mesh_3 run on the polyhedron, seeded: Mesh_3 draws from the domain's generator and, in
+/// places, from CGAL's thread-local default generator, whose state would carry over from
+/// earlier calls, so both are seeded.
+template <class Size>
+VolumeMesh mesh_once(const Polyhedron& polyhedron, const Size& size, double facet_distance,
+                     const SimulationMeshParameters& p, std::uint64_t seed) {
+  namespace params = CGAL::parameters;
+  CGAL::get_default_random() = CGAL::Random(static_cast<unsigned int>(seed));
+  CGAL::Random random(static_cast<unsigned int>(seed));
+  const Domain domain(polyhedron, &random);
+  const Criteria criteria(params::facet_angle = p.facet_angle_degrees, params::facet_size = size,
+                          params::facet_distance = facet_distance,
+                          params::cell_radius_edge_ratio = p.radius_edge_ratio, params::cell_size = size);
+  const Complex complex =
+      p.exude_sliver_degrees > 0.0
+          ? CGAL::make_mesh_3<Complex>(domain, criteria, params::no_perturb(),
+                                       params::exude(params::sliver_bound = p.exude_sliver_degrees))
+          : CGAL::make_mesh_3<Complex>(domain, criteria, params::no_perturb(), params::no_exude());
+  return from_complex(complex);
+}
+
+void require_valid_tets(const VolumeMesh& mesh) {
+  if (mesh.T.rows() == 0) throw std::runtime_error("simulation mesh: Mesh_3 produced no tetrahedra");
+  const TetQuality quality = measure_tet_quality(mesh);
+  if (!(quality.min_volume > 0.0))
+    throw std::runtime_error("simulation mesh: a tetrahedron has volume " + std::to_string(quality.min_volume));
+}
+
 }  // namespace
 
 void validate(const SimulationMeshParameters& p) {
@@ -92,26 +130,10 @@ VolumeMesh make_simulation_mesh(const SurfaceMesh& surface, const SimulationMesh
   const Vec3 extent = bounding_box_extent(surface.V);
   const double size_scale = std::cbrt(extent.prod()), distance_scale = extent.minCoeff();
   const Polyhedron polyhedron = to_cgal(surface);
-  namespace params = CGAL::parameters;
   VolumeMesh mesh;
   double scale = 1.0;
   for (int attempt = 0; attempt < 8; ++attempt) {
-    // Mesh_3 draws from the domain's generator and, in places, from CGAL's thread-local
-    // default generator, whose state would carry over from earlier calls: seed both.
-    CGAL::get_default_random() = CGAL::Random(static_cast<unsigned int>(seed));
-    CGAL::Random random(static_cast<unsigned int>(seed));
-    const Domain domain(polyhedron, &random);
-    const Criteria criteria(params::facet_angle = p.facet_angle_degrees,
-                            params::facet_size = scale * p.edge_size * size_scale,
-                            params::facet_distance = scale * p.facet_distance * distance_scale,
-                            params::cell_radius_edge_ratio = p.radius_edge_ratio,
-                            params::cell_size = scale * p.edge_size * size_scale);
-    const Complex complex =
-        p.exude_sliver_degrees > 0.0
-            ? CGAL::make_mesh_3<Complex>(domain, criteria, params::no_perturb(),
-                                         params::exude(params::sliver_bound = p.exude_sliver_degrees))
-            : CGAL::make_mesh_3<Complex>(domain, criteria, params::no_perturb(), params::no_exude());
-    mesh = from_complex(complex);
+    mesh = mesh_once(polyhedron, scale * p.edge_size * size_scale, scale * p.facet_distance * distance_scale, p, seed);
     if (mesh.V.rows() > p.max_vertices)
       scale *= 1.2;
     else if (mesh.V.rows() < p.min_vertices)
@@ -119,10 +141,16 @@ VolumeMesh make_simulation_mesh(const SurfaceMesh& surface, const SimulationMesh
     else
       break;
   }
-  if (mesh.T.rows() == 0) throw std::runtime_error("simulation mesh: Mesh_3 produced no tetrahedra");
-  const TetQuality quality = measure_tet_quality(mesh);
-  if (!(quality.min_volume > 0.0))
-    throw std::runtime_error("simulation mesh: a tetrahedron has volume " + std::to_string(quality.min_volume));
+  require_valid_tets(mesh);
+  return mesh;
+}
+
+VolumeMesh make_graded_mesh(const SurfaceMesh& surface, const std::function<double(const Vec3&)>& edge_size,
+                            double facet_distance, const SimulationMeshParameters& p, std::uint64_t seed) {
+  validate(p);
+  if (!(facet_distance > 0.0)) throw std::invalid_argument("graded mesh: facet_distance must be positive");
+  const VolumeMesh mesh = mesh_once(to_cgal(surface), SizeField{&edge_size}, facet_distance, p, seed);
+  require_valid_tets(mesh);
   return mesh;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 
 #include "grains/mesh_types.hpp"
 
@@ -32,5 +33,13 @@ void validate(const SimulationMeshParameters& parameters);
 /// When no try lands in the vertex range, the last try is returned.
 VolumeMesh make_simulation_mesh(const SurfaceMesh& surface, const SimulationMeshParameters& parameters,
                                 std::uint64_t seed);
+
+/// Tetrahedralises the inside of `surface` with facets and cells no larger than
+/// `edge_size(p)` [m] at p: a mesh graded towards where a study needs detail (a contact).
+/// `facet_distance` [m] bounds the surface's approximation error; `parameters`' angle,
+/// radius–edge ratio and exudation apply, its size bounds and vertex range do not.
+/// Deterministic given `seed`.
+VolumeMesh make_graded_mesh(const SurfaceMesh& surface, const std::function<double(const Vec3&)>& edge_size,
+                            double facet_distance, const SimulationMeshParameters& parameters, std::uint64_t seed);
 
 }  // namespace rice::grains

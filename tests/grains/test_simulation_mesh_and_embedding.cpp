@@ -8,6 +8,7 @@
 
 #include "grains/grain_generator.hpp"
 #include "grains/mesh_topology.hpp"
+#include "grains/simulation_mesh.hpp"
 #include "grains/surface_measures.hpp"
 #include "grains/tet_quality.hpp"
 
@@ -44,6 +45,31 @@ TEST(SimulationMesh, DefaultsGiveTenToSixtyVerticesOfBoundedQuality) {
       EXPECT_GT(volume, 0.4 * enclosed_volume(base)) << name;
       EXPECT_LT(volume, 1.01 * enclosed_volume(base)) << name;
     }
+}
+
+TEST(SimulationMesh, GradedMeshIsFineWhereTheSizeFieldAsks) {
+  RandomStream random(1);
+  const SurfaceMesh base = make_base_shape(sample_grain_shape(cultivar_by_name("japonica"), random));
+  const Vec3 extent = base.V.colwise().maxCoeff() - base.V.colwise().minCoeff();
+  const Vec3 tip = base.V.colwise().maxCoeff().transpose().cwiseProduct(Vec3::UnitX());  // the +x end
+  const double fine = 0.02 * extent.x(), coarse = 0.3 * extent.x();
+  const auto size = [&](const Vec3& p) { return std::min(coarse, fine + 0.2 * (p - tip).norm()); };
+  const VolumeMesh mesh = make_graded_mesh(base, size, 0.02 * extent.minCoeff(), {}, 3);
+  EXPECT_GT(measure_tet_quality(mesh).min_volume, 0.0);
+  // Mean edge of the tets near the tip against those far from it.
+  double near = 0.0, far = 0.0;
+  int near_count = 0, far_count = 0;
+  for (Eigen::Index t = 0; t < mesh.T.rows(); ++t) {
+    Vec3 centre = Vec3::Zero();
+    for (int k = 0; k < 4; ++k) centre += 0.25 * mesh.V.row(mesh.T(t, k)).transpose();
+    const double edge = (mesh.V.row(mesh.T(t, 0)) - mesh.V.row(mesh.T(t, 1))).norm();
+    if ((centre - tip).norm() < 0.1 * extent.x()) near += edge, ++near_count;
+    if ((centre - tip).norm() > 0.7 * extent.x()) far += edge, ++far_count;
+  }
+  ASSERT_GT(near_count, 0);
+  ASSERT_GT(far_count, 0);
+  EXPECT_LT(near / near_count, 0.5 * far / far_count);
+  EXPECT_THROW(make_graded_mesh(base, size, 0.0, {}, 3), std::invalid_argument);
 }
 
 TEST(Embedding, PointsOutsideASingleTetAreExtrapolatedExactly) {

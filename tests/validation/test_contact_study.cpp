@@ -1,6 +1,7 @@
 // The contact study's claims on small settings (experiments/contact_study.hpp): the reference's
 // barrier and vertex block descent's per-particle ground give the same Hertz force on the same
-// mesh, and that force approaches Hertz's from the coarse to the finer mesh; a grain-sized body
+// mesh, and that force approaches Hertz's (at the measured contact radius) from the coarse to
+// the finer mesh; a grain-sized body
 // resting on the ground under vertex block descent at one substep per frame has the reference's
 // rest shape and contact forces, while XPBD's rest forces stay off them at its stable substeps.
 #include <gtest/gtest.h>
@@ -17,17 +18,23 @@ TEST(ContactStudy, HertzForceAgreesBetweenSolversAndImprovesWithTheMesh) {
   s.depths = {0.05};
   const std::vector<HertzRow> rows = run_hertz(s);
   ASSERT_EQ(rows.size(), 4u);  // two meshes × two solvers
-  const auto find = [&](const char* solver, bool fine) {
-    const HertzRow* pick = nullptr;
+  const auto find = [&](const char* solver, double edge) {
     for (const HertzRow& r : rows)
-      if (r.solver == solver && (!pick || (fine ? r.vertices > pick->vertices : r.vertices < pick->vertices))) pick = &r;
-    return *pick;
+      if (r.solver == solver && r.contact_edge == edge) return r;
+    ADD_FAILURE() << solver << " at edge " << edge << " missing";
+    return HertzRow{};
   };
-  for (const bool fine : {false, true}) {
-    const HertzRow reference = find("reference", fine), vbd = find("vbd", fine);
-    EXPECT_NEAR(vbd.force, reference.force, 0.01 * reference.force) << (fine ? "fine" : "coarse");
+  const double coarse = s.contact_edges.front(), fine = s.contact_edges.back();
+  for (const double edge : {coarse, fine}) {
+    const HertzRow reference = find("reference", edge), vbd = find("vbd", edge);
+    EXPECT_NEAR(vbd.force, reference.force, 0.01 * reference.force) << "edge " << edge;
+    EXPECT_GT(reference.vertices, 0);
   }
-  EXPECT_LT(std::abs(find("reference", true).error), std::abs(find("reference", false).error));
+  EXPECT_GT(find("reference", fine).vertices, find("reference", coarse).vertices);
+  // Against Hertz at the measured contact radius the error falls with the mesh (the approach
+  // d keeps the held face's bias, so it is not the measure here).
+  EXPECT_LT(std::abs(find("reference", fine).radius_error), std::abs(find("reference", coarse).radius_error));
+  EXPECT_LT(std::abs(find("reference", fine).radius_error), 0.1);
 }
 
 TEST(ContactStudy, VertexBlockDescentRestsWhereTheReferenceDoes) {
