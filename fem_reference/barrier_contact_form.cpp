@@ -1,6 +1,7 @@
 // The IPC barrier against planes and spheres; see barrier_contact_form.hpp.
 #include "fem_reference/barrier_contact_form.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -28,8 +29,15 @@ BarrierContactForm::BarrierContactForm(const xpbd::Model& model, const BarrierSe
   if (!(settings.activation_distance > 0.0) || !(settings.stiffness > 0.0) ||
       !std::isfinite(settings.activation_distance) || !std::isfinite(settings.stiffness))
     throw std::invalid_argument("reference solver: the contact barrier needs a positive, finite d-hat and stiffness");
+  std::vector<char> in_sphere_body(static_cast<size_t>(model.particles.size()), 0);
+  for (const xpbd::Body& body : model.bodies)
+    if (body.kind == xpbd::BodyKind::kSoft && body.sphere_count() > 0)
+      std::fill_n(in_sphere_body.begin() + body.first_particle, body.particle_count, 1);
   for (int i = 0; i < model.particles.size(); ++i)
-    if (model.particles.w[i] > 0.0) particles_.push_back(i);
+    if (model.particles.w[i] > 0.0) {
+      particles_.push_back(i);
+      meets_colliders_.push_back(!in_sphere_body[i]);
+    }
   if (model.ground) obstacles_.push_back({nullptr, false, model.ground->normal.normalized(), model.ground->offset});
   for (size_t c = 0; c < model.colliders.size(); ++c) {
     const xpbd::Collider& collider = model.colliders[c];
@@ -64,26 +72,29 @@ BarrierContactForm::Distance BarrierContactForm::distance(const Obstacle& o, con
   return {length - o.radius, n, hessian};
 }
 
-double BarrierContactForm::element_value(int, const LocalVector& x) const {
+double BarrierContactForm::element_value(int e, const LocalVector& x) const {
   double sum = 0.0;
-  for (const Obstacle& o : obstacles_) sum += ipc_barrier(distance(o, x).d, settings_.activation_distance).value;
+  for (const Obstacle& o : obstacles_)
+    if (acts_on(o, e)) sum += ipc_barrier(distance(o, x).d, settings_.activation_distance).value;
   return settings_.stiffness * sum;
 }
 
-BarrierContactForm::LocalVector BarrierContactForm::element_gradient(int, const LocalVector& x) const {
+BarrierContactForm::LocalVector BarrierContactForm::element_gradient(int e, const LocalVector& x) const {
   LocalVector g = LocalVector::Zero();
   for (const Obstacle& o : obstacles_) {
+    if (!acts_on(o, e)) continue;
     const Distance d = distance(o, x);
     g += ipc_barrier(d.d, settings_.activation_distance).first * d.gradient;
   }
   return settings_.stiffness * g;
 }
 
-BarrierContactForm::LocalMatrix BarrierContactForm::element_hessian(int, const LocalVector& x, bool project) const {
+BarrierContactForm::LocalMatrix BarrierContactForm::element_hessian(int e, const LocalVector& x, bool project) const {
   // ∇²[b(d)] = b'' ∇d ∇dᵀ + b' ∇²d; b'' > 0 below d̂, b' < 0, ∇²d ⪰ 0 for a sphere seen from
   // outside, so only the curvature term can be indefinite.
   LocalMatrix H = LocalMatrix::Zero();
   for (const Obstacle& o : obstacles_) {
+    if (!acts_on(o, e)) continue;
     const Distance d = distance(o, x);
     const BarrierValue b = ipc_barrier(d.d, settings_.activation_distance);
     if (b.second == 0.0) continue;
@@ -95,10 +106,12 @@ BarrierContactForm::LocalMatrix BarrierContactForm::element_hessian(int, const L
 
 double BarrierContactForm::max_step(const Positions& x, const Positions& dx) const {
   double step = 1.0;
-  for (const int i : particles_) {
+  for (int e = 0; e < element_count(); ++e) {
+    const int i = particles_[e];
     const double move = dx.row(i).norm();
     if (move == 0.0) continue;
     for (const Obstacle& o : obstacles_) {
+      if (!acts_on(o, e)) continue;
       const double d = distance(o, x.row(i).transpose()).d;
       // A plane is approached at the normal speed; a sphere's distance is 1-Lipschitz.
       const double approach = o.sphere ? move : -o.normal.dot(dx.row(i).transpose());
@@ -111,8 +124,9 @@ double BarrierContactForm::max_step(const Positions& x, const Positions& dx) con
 Vec3 BarrierContactForm::contact_force(const Positions& x, int obstacle) const {
   Vec3 force = Vec3::Zero();
   const Obstacle& o = obstacles_[obstacle];
-  for (const int i : particles_) {
-    const Distance d = distance(o, x.row(i).transpose());
+  for (int e = 0; e < element_count(); ++e) {
+    if (!acts_on(o, e)) continue;
+    const Distance d = distance(o, x.row(particles_[e]).transpose());
     force -= settings_.stiffness * ipc_barrier(d.d, settings_.activation_distance).first * d.gradient;
   }
   return force;

@@ -9,6 +9,9 @@
 // starts below max_step() (no particle moves farther than 90% of its distance: d is
 // 1-Lipschitz, so nothing crosses) and rejects infinite energy never lets a particle through.
 // In a time step the barrier is weighted like the elastic energy (h²), so κ b'(d) is a force.
+//
+// As in XPBD, the ground meets every particle, while a soft body with collision spheres meets
+// colliders through its spheres (sphere_contact_form.hpp), not through its particles.
 #pragma once
 
 #include <vector>
@@ -71,8 +74,12 @@ class BarrierContactForm final : public ElementForm<1> {
   };
   static Distance distance(const Obstacle& o, const xpbd::Vec3& p);
 
+  /// Whether obstacle o acts on element (particle) e.
+  bool acts_on(const Obstacle& o, int e) const { return !o.collider || meets_colliders_[e]; }
+
   BarrierSettings settings_;
   std::vector<int> particles_;
+  std::vector<char> meets_colliders_;  ///< per element: its particle is in no body with spheres
   std::vector<Obstacle> obstacles_;
 };
 

@@ -1,7 +1,9 @@
 // Backward Euler and quasi-static solves of the shared model; see implicit_solver.hpp.
 #include "fem_reference/implicit_solver.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <string>
 
 #include "xpbd/solver.hpp"
@@ -59,11 +61,20 @@ ImplicitSolver::ImplicitSolver(xpbd::Model& model, const ImplicitSettings& setti
   append_if_used(dynamic, step_attachment_.get(), h * h);
   step_strain_rate_damping_ = std::make_unique<StrainRateDampingForm>(model.neo_hookean, h);
   append_if_used(dynamic, step_strain_rate_damping_.get(), h * h);
-  if (model.ground || !model.colliders.empty()) {
-    contact_ = std::make_unique<BarrierContactForm>(model, contact);
-    append_if_used(dynamic, contact_.get(), h * h);
-    append_if_used(quasi_static, contact_.get(), 1.0);
-  }
+  if (model.ground || !model.colliders.empty()) contact_ = std::make_unique<BarrierContactForm>(model, contact);
+  const int sphere_bodies = static_cast<int>(std::count_if(model.bodies.begin(), model.bodies.end(), [](const xpbd::Body& b) {
+    return b.kind == xpbd::BodyKind::kSoft && b.sphere_count() > 0;
+  }));
+  if (sphere_bodies >= 2) sphere_pairs_ = std::make_unique<SpherePairContactForm>(model, contact);
+  if (sphere_bodies >= 1 && !model.colliders.empty())
+    sphere_planes_ = std::make_unique<SpherePlaneContactForm>(model, contact);
+  const auto add_contact = [&](const auto* form) {
+    append_if_used(dynamic, form, h * h);
+    append_if_used(quasi_static, form, 1.0);
+  };
+  add_contact(contact_.get());
+  add_contact(sphere_pairs_.get());
+  add_contact(sphere_planes_.get());
   dynamic_ = std::make_unique<NewtonSolver>(dynamic, fixed_, settings.newton);
   static_ = std::make_unique<NewtonSolver>(quasi_static, fixed_, settings.newton);
 }
@@ -99,11 +110,13 @@ void ImplicitSolver::step() {
     if (has_forces) a += p.w[i] * model_.external_forces.row(i).transpose();
     p.x.row(i) += h * h * a.transpose();
   }
-  if (contact_) {
+  if (!contact_forms().empty()) {
     require_outside_obstacles(x_start, "step");
-    contact_->set_time((step_ + 1) * h);
+    prepare_contact((step_ + 1) * h);
     const Positions towards = p.x - x_start;
-    p.x = x_start + contact_->max_step(x_start, towards) * towards;
+    double share = 1.0;
+    for (const Form* form : contact_forms()) share = std::min(share, form->max_step(x_start, towards));
+    p.x = x_start + share * towards;
   }
   report_ = dynamic_->minimize(p.x);
   check("step");
@@ -113,16 +126,37 @@ void ImplicitSolver::step() {
   ++step_;
 }
 
+std::vector<Form*> ImplicitSolver::contact_forms() const {
+  std::vector<Form*> forms;
+  for (Form* form : std::initializer_list<Form*>{contact_.get(), sphere_pairs_.get(), sphere_planes_.get()})
+    if (form) forms.push_back(form);
+  return forms;
+}
+
+void ImplicitSolver::prepare_contact(double t) {
+  if (contact_) contact_->set_time(t);
+  if (sphere_planes_) {
+    sphere_planes_->set_time(t);
+    sphere_planes_->set_radii(model_);
+  }
+  if (sphere_pairs_) sphere_pairs_->set_radii(model_);
+}
+
 void ImplicitSolver::require_outside_obstacles(const Positions& x, const char* what) const {
-  if (std::isfinite(contact_->value(x))) return;
+  const auto finite = [&](const Form* form) { return std::isfinite(form->value(x)); };
+  const std::vector<Form*> forms = contact_forms();
+  if (std::all_of(forms.begin(), forms.end(), finite)) return;
   throw xpbd::SimulationError("reference solver, " + std::string(what) + " " + std::to_string(step_) +
-                              ": a particle is on or inside the ground or a collider, where the contact "
-                              "barrier is infinite (start every particle outside)");
+                              ": a particle or collision sphere is on or inside the ground, a collider or "
+                              "another body, where the contact barrier is infinite (start everything apart)");
 }
 
 NewtonReport ImplicitSolver::solve_static() {
   hold_rigid_attachments();
-  if (contact_) require_outside_obstacles(model_.particles.x, "static solve");
+  if (!contact_forms().empty()) {
+    prepare_contact(step_ * settings_.time_step);
+    require_outside_obstacles(model_.particles.x, "static solve");
+  }
   report_ = static_->minimize(model_.particles.x);
   check("static solve");
   model_.particles.v.setZero();

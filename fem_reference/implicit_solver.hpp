@@ -28,14 +28,17 @@
 // Quasi-static mode minimises U(x) − fᵀx. Pinned particles (w = 0) and rigid attachments
 // (α = 0, held at their targets) have no DOFs. Contact with the ground plane and with
 // half-space and sphere colliders is the barrier B of barrier_contact_form.hpp, added to U
-// (frictionless; posed at the end of each step); contact between bodies is not modelled, and
-// a model with a rigid spring or volume constraint or another collider shape is rejected.
+// (frictionless; posed at the end of each step); soft bodies with collision spheres touch
+// each other and half-space colliders through their spheres, as in XPBD
+// (sphere_contact_form.hpp). A model with a rigid spring or volume constraint or another
+// collider shape is rejected.
 #pragma once
 
 #include <memory>
 #include <vector>
 
 #include "fem_reference/barrier_contact_form.hpp"
+#include "fem_reference/sphere_contact_form.hpp"
 #include "fem_reference/constraint_potential_form.hpp"
 #include "fem_reference/inertia_form.hpp"
 #include "fem_reference/load_form.hpp"
@@ -68,6 +71,10 @@ class ImplicitSolver {
   const NewtonReport& report() const { return report_; }
   /// The contact barrier, or null when the model has no ground and no colliders.
   const BarrierContactForm* contact() const { return contact_.get(); }
+  /// Contact between soft bodies' collision spheres, and of those spheres with half-space
+  /// colliders (sphere_contact_form.hpp); null where the model has none.
+  const SpherePairContactForm* sphere_pairs() const { return sphere_pairs_.get(); }
+  const SpherePlaneContactForm* sphere_planes() const { return sphere_planes_.get(); }
   const ImplicitSettings& settings() const { return settings_; }
 
  private:
@@ -90,6 +97,12 @@ class ImplicitSolver {
   std::unique_ptr<ConstraintPotentialForm<AttachmentKernel>> step_attachment_;
   std::unique_ptr<StrainRateDampingForm> step_strain_rate_damping_;
   std::unique_ptr<BarrierContactForm> contact_;
+  std::unique_ptr<SpherePairContactForm> sphere_pairs_;
+  std::unique_ptr<SpherePlaneContactForm> sphere_planes_;
+  /// The contact forms that are on, for what every step does with all of them.
+  std::vector<Form*> contact_forms() const;
+  /// Poses the colliders at time t and takes the spheres' radii from the model's shape now.
+  void prepare_contact(double t);
   std::unique_ptr<NewtonSolver> dynamic_, static_;
   NewtonReport report_;
   long step_ = 0;

@@ -10,9 +10,11 @@
 #include "fem_reference/constraint_potential_form.hpp"
 #include "fem_reference/inertia_form.hpp"
 #include "fem_reference/load_form.hpp"
+#include "fem_reference/sphere_contact_form.hpp"
 #include "fem_reference/strain_rate_damping_form.hpp"
 #include "tests/common/finite_differences.hpp"
 #include "tests/common/jittered_mesh.hpp"
+#include "tests/xpbd/grain_fixtures.hpp"
 #include "xpbd/energy.hpp"
 
 namespace rice::fem {
@@ -184,6 +186,50 @@ TEST(FormDerivatives, ContactBarrierMatchesFiniteDifferencesNearPlanesAndSpheres
   EXPECT_LT(step, model.particles.x(0, 2));
   EXPECT_TRUE(std::isfinite(barrier.value(model.particles.x + step * dx)));
   EXPECT_FALSE(std::isfinite(barrier.value(model.particles.x + 1.01 * model.particles.x(0, 2) * dx)));
+}
+
+TEST(FormDerivatives, SphereContactBarriersMatchFiniteDifferences) {
+  // Two soft grains' collision spheres, one grain above the other and both above a tilted
+  // half-space, every gap inside (0, d̂); particles jittered so no pair is aligned.
+  const double dhat = 1e-4;
+  xpbd::Model model;
+  xpbd::testing::add_grain(model, xpbd::BodyKind::kSoft, xpbd::Vec3::Zero());
+  xpbd::testing::add_grain(model, xpbd::BodyKind::kSoft,
+                           xpbd::Vec3(0.3e-3, 0.2e-3, xpbd::testing::kGrainThickness + 0.3 * dhat));
+  const xpbd::Vec3 normal = xpbd::Vec3(0.02, 0.0, 1.0).normalized();
+  model.colliders.push_back(xpbd::testing::half_space(normal, -0.5 * dhat, 0.0, 0.0));
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> jitter(-0.05 * dhat, 0.05 * dhat);
+  for (int i = 0; i < model.particles.size(); ++i)
+    for (int c = 0; c < 3; ++c) model.particles.x(i, c) += jitter(random);
+  const BarrierSettings settings{.activation_distance = dhat, .stiffness = 1e3};
+  const SpherePairContactForm pairs(model, settings);
+  const SpherePlaneContactForm planes(model, settings);
+  ASSERT_EQ(pairs.element_count(), 100);   // 10 × 10 spheres of two bodies
+  ASSERT_EQ(planes.element_count(), 20);
+  ASSERT_GT(pairs.value(model.particles.x), 0.0);   // some pairs within d̂
+  ASSERT_GT(planes.value(model.particles.x), 0.0);
+  check_form(pairs, model.particles.x, dhat);
+  check_form(planes, model.particles.x, dhat);
+  // Newton and reaction: the pair forces on the two bodies cancel.
+  EXPECT_LT((pairs.force_on_body(model.particles.x, 0) + pairs.force_on_body(model.particles.x, 1)).norm(),
+            1e-9 * pairs.force_on_body(model.particles.x, 0).norm());
+  EXPECT_GT(pairs.force_on_body(model.particles.x, 1).z(), 0.0);  // the lower grain pushes the upper up
+  EXPECT_GT(planes.force_from_plane(model.particles.x, 0).dot(normal), 0.0);
+  // max_step stops a step short of the spheres touching: the upper grain moved straight down.
+  Positions dx = Positions::Zero(model.particles.x.rows(), 3);
+  const xpbd::Body& upper = model.bodies[1];
+  dx.middleRows(upper.first_particle, upper.particle_count).col(2).setConstant(-1e-3);
+  const double step = pairs.max_step(model.particles.x, dx);
+  EXPECT_GT(step, 0.0);
+  EXPECT_TRUE(std::isfinite(pairs.value(model.particles.x + step * dx)));
+  EXPECT_FALSE(std::isfinite(pairs.value(model.particles.x + dx)));  // 1 mm down: through the lower grain
+  // Colliders other than half-spaces are refused.
+  xpbd::Collider ball;
+  ball.shape = xpbd::ColliderShape::kSphere;
+  ball.radius = 1e-3;
+  model.colliders.push_back(ball);
+  EXPECT_THROW(SpherePlaneContactForm(model, settings), std::invalid_argument);
 }
 
 TEST(FormDerivatives, IpcBarrierIsTwiceContinuousAtTheActivationDistance) {

@@ -7,6 +7,7 @@
 #include "xpbd/solver.hpp"
 #include "tests/common/finite_differences.hpp"
 #include "tests/common/jittered_mesh.hpp"
+#include "tests/xpbd/grain_fixtures.hpp"
 #include "xpbd/energy.hpp"
 
 namespace rice::fem {
@@ -130,6 +131,48 @@ TEST(ImplicitSolver, BarrierCarriesTheWeightOfABlockOnTheGround) {
   EXPECT_LT(force.head<2>().norm(), 1e-6 * weight);
   EXPECT_GT(model.particles.x.col(2).minCoeff(), 0.0);
   EXPECT_LT(model.particles.x.col(2).minCoeff(), barrier.activation_distance);
+}
+
+TEST(ImplicitSolver, CollisionSpheresCarryTheUpperOfTwoStackedGrains) {
+  // Two soft grain-sized bodies (xpbd grain fixture, E = 50 kPa), one on the other, the same
+  // contact geometry as XPBD's contact solver: the lower grain's bottom face is held, the
+  // upper one rests on it. A sphere resting on a sphere without friction is unstable (the
+  // upper grain slides off), so four weak springs (k = 1 N/m, five times the contacts'
+  // negative lateral stiffness F/2r) hold the upper grain's top corners. At rest its forces
+  // balance: the spheres' barrier and the springs carry its weight, the barrier most of it,
+  // and no two spheres overlap.
+  const BarrierSettings barrier{.activation_distance = 1e-5, .stiffness = 1e3};
+  xpbd::Model model;
+  xpbd::testing::add_grain(model, xpbd::BodyKind::kSoft, xpbd::Vec3::Zero());
+  const int upper = xpbd::testing::add_grain(
+      model, xpbd::BodyKind::kSoft, xpbd::Vec3(0.0, 0.0, xpbd::testing::kGrainThickness + 0.5 * barrier.activation_distance));
+  const xpbd::Body& top = model.bodies[upper];
+  std::vector<int> bottom;
+  for (int i = 0; i < model.bodies[0].particle_count; ++i)
+    if (model.particles.x(i, 2) == 0.0) bottom.push_back(i);
+  xpbd::pin_particles(model, bottom);
+  const double top_z = model.particles.x.middleRows(top.first_particle, top.particle_count).col(2).maxCoeff();
+  for (int i = top.first_particle; i < top.first_particle + top.particle_count; ++i) {
+    const xpbd::Vec3 x = model.particles.x.row(i).transpose();
+    const bool corner = x.z() == top_z && (x.x() == 0.0 || std::abs(x.x() - xpbd::testing::kGrainLength) < 1e-12) &&
+                        (x.y() == 0.0 || std::abs(x.y() - xpbd::testing::kGrainWidth) < 1e-12);
+    if (corner) model.attachments.push_back({i, x, 1.0});  // α = 1 m/N
+  }
+  ASSERT_EQ(model.attachments.size(), 4u);
+  ImplicitSolver solver(model, {.time_step = 1e-3, .newton = {.tolerance = 1e-10, .max_iterations = 500}}, barrier);
+  ASSERT_NE(solver.sphere_pairs(), nullptr);
+  EXPECT_EQ(solver.sphere_planes(), nullptr);  // no colliders
+  ASSERT_TRUE(solver.solve_static().converged);
+  const double weight = 9.81 * (1.0 / model.particles.w.segment(top.first_particle, top.particle_count).array()).sum();
+  xpbd::Vec3 springs = xpbd::Vec3::Zero();
+  for (const xpbd::Attachment& a : model.attachments)
+    springs += (a.target - model.particles.x.row(a.particle).transpose()) / a.compliance;
+  const xpbd::Vec3 on_upper = solver.sphere_pairs()->force_on_body(model.particles.x, upper);
+  EXPECT_NEAR(on_upper.z() + springs.z(), weight, 1e-6 * weight);
+  EXPECT_LT((on_upper.head<2>() + springs.head<2>()).norm(), 1e-6 * weight);
+  EXPECT_GT(on_upper.z(), 0.9 * weight);  // the springs carry little of it
+  EXPECT_NEAR((on_upper + solver.sphere_pairs()->force_on_body(model.particles.x, 0)).norm(), 0.0, 1e-9 * weight);
+  EXPECT_TRUE(std::isfinite(solver.sphere_pairs()->value(model.particles.x)));  // no overlap
 }
 
 TEST(ImplicitSolver, BlockDroppedOnASphereColliderNeverEntersIt) {
