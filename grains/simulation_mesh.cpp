@@ -145,11 +145,11 @@ VolumeMesh make_simulation_mesh(const SurfaceMesh& surface, const SimulationMesh
   return mesh;
 }
 
-VolumeMesh make_graded_mesh(const SurfaceMesh& surface, const std::function<double(const Vec3&)>& edge_size,
+VolumeMesh make_graded_mesh(const SurfaceMesh& surface, const std::function<double(const Vec3&)>& size,
                             double facet_distance, const SimulationMeshParameters& p, std::uint64_t seed) {
   validate(p);
   if (!(facet_distance > 0.0)) throw std::invalid_argument("graded mesh: facet_distance must be positive");
-  const VolumeMesh mesh = mesh_once(to_cgal(surface), SizeField{&edge_size}, facet_distance, p, seed);
+  const VolumeMesh mesh = mesh_once(to_cgal(surface), SizeField{&size}, facet_distance, p, seed);
   require_valid_tets(mesh);
   return mesh;
 }

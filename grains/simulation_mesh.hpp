@@ -34,12 +34,13 @@ void validate(const SimulationMeshParameters& parameters);
 VolumeMesh make_simulation_mesh(const SurfaceMesh& surface, const SimulationMeshParameters& parameters,
                                 std::uint64_t seed);
 
-/// Tetrahedralises the inside of `surface` with facets and cells no larger than
-/// `edge_size(p)` [m] at p: a mesh graded towards where a study needs detail (a contact).
-/// `facet_distance` [m] bounds the surface's approximation error; `parameters`' angle,
-/// radius–edge ratio and exudation apply, its size bounds and vertex range do not.
+/// Tetrahedralises the inside of `surface` with Mesh_3's size bounds (the radii of facets'
+/// surface Delaunay balls and of cells' circumspheres; a regular tet's is √6/4 of its edge)
+/// given as a field `size(p)` [m]: a mesh graded towards where a study needs detail (a
+/// contact). `facet_distance` [m] bounds the surface's approximation error; `parameters`'
+/// angle, radius–edge ratio and exudation apply, its size bounds and vertex range do not.
 /// Deterministic given `seed`.
-VolumeMesh make_graded_mesh(const SurfaceMesh& surface, const std::function<double(const Vec3&)>& edge_size,
+VolumeMesh make_graded_mesh(const SurfaceMesh& surface, const std::function<double(const Vec3&)>& size,
                             double facet_distance, const SimulationMeshParameters& parameters, std::uint64_t seed);
 
 }  // namespace rice::grains
