@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <initializer_list>
 #include <string>
 
 #include "xpbd/solver.hpp"
@@ -68,7 +67,9 @@ ImplicitSolver::ImplicitSolver(xpbd::Model& model, const ImplicitSettings& setti
   if (sphere_bodies >= 2) sphere_pairs_ = std::make_unique<SpherePairContactForm>(model, contact);
   if (sphere_bodies >= 1 && !model.colliders.empty())
     sphere_planes_ = std::make_unique<SpherePlaneContactForm>(model, contact);
-  const auto add_contact = [&](const auto* form) {
+  const auto add_contact = [&](auto* form) {
+    if (!form) return;
+    contact_forms_.push_back(form);
     append_if_used(dynamic, form, h * h);
     append_if_used(quasi_static, form, 1.0);
   };
@@ -110,12 +111,12 @@ void ImplicitSolver::step() {
     if (has_forces) a += p.w[i] * model_.external_forces.row(i).transpose();
     p.x.row(i) += h * h * a.transpose();
   }
-  if (!contact_forms().empty()) {
+  if (!contact_forms_.empty()) {
     require_outside_obstacles(x_start, "step");
     prepare_contact((step_ + 1) * h);
     const Positions towards = p.x - x_start;
     double share = 1.0;
-    for (const Form* form : contact_forms()) share = std::min(share, form->max_step(x_start, towards));
+    for (const Form* form : contact_forms_) share = std::min(share, form->max_step(x_start, towards));
     p.x = x_start + share * towards;
   }
   report_ = dynamic_->minimize(p.x);
@@ -124,13 +125,6 @@ void ImplicitSolver::step() {
   for (int i = 0; i < p.size(); ++i)
     if (fixed_[i]) p.v.row(i).setZero();
   ++step_;
-}
-
-std::vector<Form*> ImplicitSolver::contact_forms() const {
-  std::vector<Form*> forms;
-  for (Form* form : std::initializer_list<Form*>{contact_.get(), sphere_pairs_.get(), sphere_planes_.get()})
-    if (form) forms.push_back(form);
-  return forms;
 }
 
 void ImplicitSolver::prepare_contact(double t) {
@@ -144,8 +138,7 @@ void ImplicitSolver::prepare_contact(double t) {
 
 void ImplicitSolver::require_outside_obstacles(const Positions& x, const char* what) const {
   const auto finite = [&](const Form* form) { return std::isfinite(form->value(x)); };
-  const std::vector<Form*> forms = contact_forms();
-  if (std::all_of(forms.begin(), forms.end(), finite)) return;
+  if (std::all_of(contact_forms_.begin(), contact_forms_.end(), finite)) return;
   throw xpbd::SimulationError("reference solver, " + std::string(what) + " " + std::to_string(step_) +
                               ": a particle or collision sphere is on or inside the ground, a collider or "
                               "another body, where the contact barrier is infinite (start everything apart)");
@@ -153,7 +146,7 @@ void ImplicitSolver::require_outside_obstacles(const Positions& x, const char* w
 
 NewtonReport ImplicitSolver::solve_static() {
   hold_rigid_attachments();
-  if (!contact_forms().empty()) {
+  if (!contact_forms_.empty()) {
     prepare_contact(step_ * settings_.time_step);
     require_outside_obstacles(model_.particles.x, "static solve");
   }

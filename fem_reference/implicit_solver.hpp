@@ -99,8 +99,7 @@ class ImplicitSolver {
   std::unique_ptr<BarrierContactForm> contact_;
   std::unique_ptr<SpherePairContactForm> sphere_pairs_;
   std::unique_ptr<SpherePlaneContactForm> sphere_planes_;
-  /// The contact forms that are on, for what every step does with all of them.
-  std::vector<Form*> contact_forms() const;
+  std::vector<Form*> contact_forms_;  ///< those of the three above that are on
   /// Poses the colliders at time t and takes the spheres' radii from the model's shape now.
   void prepare_contact(double t);
   std::unique_ptr<NewtonSolver> dynamic_, static_;

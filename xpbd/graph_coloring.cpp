@@ -1,6 +1,7 @@
 // Greedy constraint colouring; see graph_coloring.hpp.
 #include "xpbd/graph_coloring.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -13,7 +14,6 @@ Coloring greedy_coloring(std::span<const int> particles, int arity, int particle
   std::vector<std::vector<int>> colors_of_particle(particle_count);
   std::vector<int> color_of(count);
   std::vector<int> taken_by;  // taken_by[color] == c: colour used by a neighbour of c
-  std::vector<int> color_sizes;
   for (int c = 0; c < count; ++c) {
     const auto stencil = particles.subspan(static_cast<size_t>(arity) * c, arity);
     for (const int p : stencil) {
@@ -24,22 +24,25 @@ Coloring greedy_coloring(std::span<const int> particles, int arity, int particle
     }
     int color = 0;
     while (color < static_cast<int>(taken_by.size()) && taken_by[color] == c) ++color;
-    if (color == static_cast<int>(taken_by.size())) {
-      taken_by.push_back(-1);
-      color_sizes.push_back(0);
-    }
+    if (color == static_cast<int>(taken_by.size())) taken_by.push_back(-1);
     color_of[c] = color;
-    ++color_sizes[color];
     for (const int p : stencil) colors_of_particle[p].push_back(color);
   }
+  return group_by_color(color_of);
+}
 
+Coloring group_by_color(std::span<const int> color_of) {
+  int colors = 0;
+  for (const int c : color_of) colors = std::max(colors, c + 1);
   Coloring coloring;
-  coloring.begin.resize(color_sizes.size() + 1, 0);
-  for (size_t k = 0; k < color_sizes.size(); ++k)
-    coloring.begin[k + 1] = coloring.begin[k] + color_sizes[k];
-  coloring.order.resize(count);
+  coloring.begin.assign(colors + 1, 0);
+  for (const int c : color_of)
+    if (c >= 0) ++coloring.begin[c + 1];
+  for (int c = 0; c < colors; ++c) coloring.begin[c + 1] += coloring.begin[c];
+  coloring.order.resize(coloring.begin.back());
   std::vector<int> next(coloring.begin.begin(), coloring.begin.end() - 1);
-  for (int c = 0; c < count; ++c) coloring.order[next[color_of[c]]++] = c;
+  for (int i = 0; i < static_cast<int>(color_of.size()); ++i)
+    if (color_of[i] >= 0) coloring.order[next[color_of[i]]++] = i;
   return coloring;
 }
 

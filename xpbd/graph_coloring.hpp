@@ -23,4 +23,8 @@ struct Coloring {
 /// order and each takes the smallest colour none of its particles has yet.
 Coloring greedy_coloring(std::span<const int> particles, int arity, int particle_count);
 
+/// Groups items by colour: item i goes to colour color_of[i], in index order within it; an
+/// item of colour −1 is left out.
+Coloring group_by_color(std::span<const int> color_of);
+
 }  // namespace rice::xpbd

@@ -38,16 +38,7 @@ Coloring color_particles(const Model& model, const std::vector<int>& first, cons
     color[i] = static_cast<int>(std::find(taken.begin(), taken.end(), 0) - taken.begin());
     colors = std::max(colors, color[i] + 1);
   }
-  Coloring coloring;
-  coloring.begin.assign(colors + 1, 0);
-  for (int i = 0; i < n; ++i)
-    if (color[i] >= 0) ++coloring.begin[color[i] + 1];
-  for (int c = 0; c < colors; ++c) coloring.begin[c + 1] += coloring.begin[c];
-  coloring.order.resize(coloring.begin.back());
-  std::vector<int> next(coloring.begin.begin(), coloring.begin.end() - 1);
-  for (int i = 0; i < n; ++i)
-    if (color[i] >= 0) coloring.order[next[color[i]]++] = i;
-  return coloring;
+  return group_by_color(color);
 }
 
 }  // namespace
