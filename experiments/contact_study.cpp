@@ -442,15 +442,8 @@ void hertz_outputs(const ContactStudySettings& s, const std::filesystem::path& f
                             " R) to " + worst(s.contact_edges.back()) + " (edge " + fixed(s.contact_edges.back(), 3) +
                             " R); VBD within " + fixed(100.0 * apart, 1) + "% of it";
   std::printf("\n%s\n", title.c_str());
-  render_plot(folder, "contact_hertz", R"(set terminal pngcairo size 1400,600
-set output 'contact_hertz.png'
-set datafile separator ','
-set datafile missing 'nan'
-set multiplot layout 1,2 title ')" + title + R"('
-set logscale xy
-set format x '10^{%L}'
-set format y '10^{%L}'
-set xlabel 'depth d [m]'
+  render_plot(folder, "contact_hertz", csv_plot_header("contact_hertz", 1400, 600) +
+                                           "set multiplot layout 1,2 title '" + title + "'\n" + kLogLogAxes + R"(set xlabel 'depth d [m]'
 set ylabel 'force on the held face [N]'
 set key top left
 E = )" + cell(effective_modulus(s)) + R"(
@@ -496,15 +489,8 @@ void grain_outputs(const ContactStudySettings& s, const std::filesystem::path& f
   const std::string grain_title = "Grain at rest within 1% of the reference rest shape: " + cheapest("xpbd") + ", " +
                                   cheapest("vbd");
   std::printf("%s\n", grain_title.c_str());
-  render_plot(folder, "contact_grain", R"(set terminal pngcairo size 1400,600
-set output 'contact_grain.png'
-set datafile separator ','
-set datafile missing 'nan'
-set multiplot layout 1,2 title ')" + grain_title + R"('
-set logscale xy
-set format x '10^{%L}'
-set format y '10^{%L}'
-set xlabel 'wall time per simulated second [s]'
+  render_plot(folder, "contact_grain", csv_plot_header("contact_grain", 1400, 600) +
+                                           "set multiplot layout 1,2 title '" + grain_title + "'\n" + kLogLogAxes + R"(set xlabel 'wall time per simulated second [s]'
 set cblabel 'log2 substeps per frame'
 set key bottom left
 do for [col in '6 7'] {

@@ -311,15 +311,11 @@ void convergence_study_command(const ConvergenceSettings& s, const std::filesyst
                   r.failed ? "  (FAILED or unconverged steps)" : "");
 
   const std::string grid = std::to_string(s.grid_resolution);
-  render_plot(folder, "convergence", R"(set terminal pngcairo size 2000,1000
-set output 'convergence.png'
-set datafile separator ','
-set datafile missing 'nan'
-set multiplot layout 2,3 title 'XPBD is cheapest down to ~5e-3; with the primal correction, and vertex block descent (stable from 1 substep per frame, but dear), runs converge to the reference'
-set logscale xy
-set format x '10^{%L}'
-set format y '10^{%L}'
-set xlabel 'wall time per simulated second [s]'
+  render_plot(folder, "convergence", csv_plot_header("convergence", 2000, 1000) +
+                                         "set multiplot layout 2,3 title 'XPBD is cheapest down to ~5e-3; with the "
+                                         "primal correction, and vertex block descent (stable from 1 substep per "
+                                         "frame, but dear), runs converge to the reference'\n" +
+                                         kLogLogAxes + R"(set xlabel 'wall time per simulated second [s]'
 set ylabel 'RMS vertex error / length'
 set cblabel 'log2 substeps per frame'
 set key bottom left
@@ -339,15 +335,8 @@ do for [scene in 'hanging-cantilever twisted-bar'] {
 unset multiplot
 )");
   stop_point();  // a Ctrl-C while gnuplot ran (it does not get the signal) stops here
-  render_plot(folder, "convergence_resolution", R"(set terminal pngcairo size 1400,500
-set output 'convergence_resolution.png'
-set datafile separator ','
-set datafile missing 'nan'
-set multiplot layout 1,2
-set logscale xy
-set format x '10^{%L}'
-set format y '10^{%L}'
-set xlabel 'wall time per simulated second [s]'
+  render_plot(folder, "convergence_resolution", csv_plot_header("convergence_resolution", 1400, 500) +
+                                                    "set multiplot layout 1,2\n" + kLogLogAxes + R"(set xlabel 'wall time per simulated second [s]'
 set ylabel 'RMS vertex error / length (vs reference at that resolution)'
 set key bottom left
 do for [scene in 'hanging-cantilever twisted-bar'] {

@@ -203,4 +203,9 @@ bool render_plot(const std::filesystem::path& folder, const std::string& name, c
   return true;
 }
 
+std::string csv_plot_header(const std::string& name, int width, int height) {
+  return "set terminal pngcairo size " + std::to_string(width) + "," + std::to_string(height) + "\nset output '" + name +
+         ".png'\nset datafile separator ','\nset datafile missing 'nan'\n";
+}
+
 }  // namespace rice::experiments

@@ -17,4 +17,11 @@ namespace rice::experiments {
 /// the PNG if gnuplot's output is not a whole PNG (signature to IEND chunk).
 bool render_plot(const std::filesystem::path& folder, const std::string& name, const std::string& gnuplot_script);
 
+/// The lines a plot of CSV files starts with: `<name>.png` of width × height pixels, fields
+/// separated by commas, `nan` for a missing value.
+std::string csv_plot_header(const std::string& name, int width, int height);
+
+/// Both axes logarithmic and labelled as powers of ten.
+inline constexpr const char* kLogLogAxes = "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\n";
+
 }  // namespace rice::experiments

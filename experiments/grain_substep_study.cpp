@@ -133,14 +133,7 @@ void grain_substep_study_command(const GrainSubstepStudySettings& s, const std::
     return list;
   };
   // One colour and point type per method and K; the labels are the substep counts N.
-  render_plot(folder, "grain_substeps", R"(set terminal pngcairo size 1200,700
-set output 'grain_substeps.png'
-set datafile separator ','
-set datafile missing 'nan'
-set logscale xy
-set format x '10^{%L}'
-set format y '10^{%L}'
-set xlabel 'wall time per simulated second [s]'
+  render_plot(folder, "grain_substeps", csv_plot_header("grain_substeps", 1200, 700) + kLogLogAxes + R"(set xlabel 'wall time per simulated second [s]'
 set ylabel 'RMS distance of the rest state to the finest VBD run / grain length'
 set title ")" + title + R"(" noenhanced
 set key bottom left
