@@ -325,7 +325,7 @@ std::vector<GrainContactRow> run_grain_contact(const ContactStudySettings& s) {
   std::vector<GrainContactRow> rows(jobs.size());
   for_each_item("contact: grain on the ground", static_cast<int>(jobs.size()), [&](int j) {
     GrainContactRow& r = rows[j];
-    r.method = jobs[j].method == xpbd::Method::kVbd ? "vbd" : "xpbd";
+    r.method = xpbd::method_name(jobs[j].method);
     r.substeps = jobs[j].substeps;
     r.iterations = jobs[j].iterations;
     xpbd::Model model = ground_model(s, body, pose);

@@ -61,8 +61,6 @@ Run simulate(const grains::Grain& grain, const GrainSubstepStudySettings& s, xpb
   return run;
 }
 
-const char* method_name(xpbd::Method m) { return m == xpbd::Method::kVbd ? "vbd" : "xpbd"; }
-
 }  // namespace
 
 void validate(const GrainSubstepStudySettings& s) {
@@ -112,9 +110,9 @@ void grain_substep_study_command(const GrainSubstepStudySettings& s, const std::
   for (const Run& r : runs) {
     const double error = reference && r.finite ? std::sqrt((r.x - reference->x).rowwise().squaredNorm().mean()) / length
                                                : std::numeric_limits<double>::quiet_NaN();
-    table.add_row({method_name(r.method), cell(r.substeps), cell(r.iterations), cell(1.0 / (60.0 * r.substeps)),
+    table.add_row({xpbd::method_name(r.method), cell(r.substeps), cell(r.iterations), cell(1.0 / (60.0 * r.substeps)),
                    cell(r.stable() ? 1 : 0), cell(r.fastest), cell(r.volume_ratio), cell(error), cell(r.wall)});
-    std::printf("%-5s %5d %3d %10.2e %7s %11.2e %9.3f %11.2e %9.3f\n", method_name(r.method), r.substeps, r.iterations,
+    std::printf("%-5s %5d %3d %10.2e %7s %11.2e %9.3f %11.2e %9.3f\n", xpbd::method_name(r.method), r.substeps, r.iterations,
                 1.0 / (60.0 * r.substeps), r.stable() ? "yes" : "NO", r.fastest, r.volume_ratio, error, r.wall);
     int& fewest = largest_stable[r.method == xpbd::Method::kVbd];
     if (r.stable() && (fewest == 0 || r.substeps < fewest)) fewest = r.substeps;

@@ -37,6 +37,11 @@ enum class Method {
   kVbd,
 };
 
+/// "xpbd", "pbd" or "vbd": the method's name in the studies' tables.
+constexpr const char* method_name(Method m) {
+  return m == Method::kVbd ? "vbd" : m == Method::kPbd ? "pbd" : "xpbd";
+}
+
 enum class Execution {
   kSerial,    ///< plain Gauss–Seidel in constraint index order
   kParallel,  ///< Gauss–Seidel colour by colour, each colour in parallel (TBB)

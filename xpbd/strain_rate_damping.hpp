@@ -18,7 +18,7 @@
 //
 // ΔF = F − Fⁿ. Ψ is quadratic in the positions and convex (𝒞 is positive definite for μ > 0,
 // 3λ_L + 2μ > 0), so both solvers use its exact derivatives: the reference adds it to the
-// Newton energy, XPBD and vertex block descent minimise it by vertex (solver.hpp). Stateless
+// Newton energy, vertex block descent minimises it by vertex (XPBD refuses it: solver.hpp). Stateless
 // kernels in ΔF; derivatives in the positions follow from tet_stencil.hpp.
 #pragma once
 
