@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "experiments/gnuplot.hpp"
+#include "experiments/grain_contact.hpp"
 #include "experiments/interrupt.hpp"
 #include "experiments/item_loop.hpp"
 #include "experiments/output.hpp"
@@ -231,123 +232,7 @@ std::vector<HertzRow> vbd_rows(const ContactStudySettings& s, const grains::Volu
   return rows;
 }
 
-/// What rests on the ground: a procedural grain's tet mesh, or a box of a grain's size.
-struct RestingBody {
-  xpbd::TetMesh mesh;
-  double density = 0.0;
-};
-
-RestingBody resting_body(const ContactStudySettings& s) {
-  if (s.box_grain) {
-    RestingBody body{xpbd::make_box_tet_mesh(Vec3(7e-3, 3e-3, 2e-3), 4, 2, 1), s.density};
-    return body;
-  }
-  grains::GrainRecipe recipe;
-  recipe.cultivar = grains::cultivar_by_name("japonica");
-  const grains::Grain grain = grains::make_grain(recipe, s.grain_seed);
-  return {xpbd::TetMesh{grain.simulation.V, grain.simulation.T}, grain.simulation_density};
-}
-
-/// The body as a model at positions x: its tets, a frictionless ground, gravity.
-xpbd::Model ground_model(const ContactStudySettings& s, const RestingBody& body, const xpbd::Positions& x) {
-  xpbd::Model model;
-  model.particles = xpbd::make_particles(body.mesh, body.density);
-  xpbd::add_neo_hookean_tets(model, body.mesh, xpbd::lame_from_young_poisson(s.young, s.poisson));
-  model.particles.x = x;
-  model.ground = xpbd::GroundPlane{};
-  return model;
-}
-
-/// The undeformed body turned into a pose where it rests stably, its lowest point `lift` above
-/// the ground: laid with its axis of least spread vertical, then let the reference's static
-/// solve (a minimum of the potential, so a stable pose, not a rocking one) settle it; the
-/// rotation from rest to that state is fitted by Umeyama's method.
-xpbd::Positions resting_pose(const ContactStudySettings& s, const RestingBody& body, double lift) {
-  const xpbd::Positions& rest = body.mesh.V;
-  const xpbd::Positions centred = rest.rowwise() - rest.colwise().mean();
-  const Eigen::SelfAdjointEigenSolver<xpbd::Mat3> axes(centred.transpose() * centred);
-  xpbd::Mat3 flat = axes.eigenvectors().rowwise().reverse().transpose();  // rows: longest axis first
-  if (flat.determinant() < 0.0) flat.row(2) *= -1.0;
-  xpbd::Positions laid = centred * flat.transpose();
-  laid.col(2).array() += lift - laid.col(2).minCoeff();
-  xpbd::Model model = ground_model(s, body, laid);
-  fem::ImplicitSolver(model, {.time_step = 1e-3, .newton = {.tolerance = 1e-10, .max_iterations = 300}},
-                      {.activation_distance = s.barrier_distance, .stiffness = s.barrier_stiffness})
-      .solve_static();
-  const Eigen::Matrix4d fit =
-      Eigen::umeyama(Eigen::Matrix3Xd(centred.transpose()), Eigen::Matrix3Xd(model.particles.x.transpose()), false);
-  xpbd::Positions pose = centred * xpbd::Mat3(fit.topLeftCorner<3, 3>()).transpose();
-  pose.col(2).array() += lift - pose.col(2).minCoeff();
-  return pose;
-}
-
-/// f_i = ∂U/∂x_i − m_i g: the force that holds each particle at rest (the contact force where
-/// the grain touches, zero elsewhere).
-xpbd::Positions holding_forces(const xpbd::Model& model) {
-  xpbd::Positions f = xpbd::elastic_energy_gradient(model);
-  for (int i = 0; i < model.particles.size(); ++i) f.row(i) -= model.gravity.transpose() / model.particles.w[i];
-  return f;
-}
-
-/// RMS distance between two shapes on the ground after removing what a frictionless ground
-/// leaves free: a horizontal shift and a turn about the vertical (fitted in the plane).
-double shape_distance(const xpbd::Positions& a, const xpbd::Positions& b) {
-  Eigen::RowVector3d ca = a.colwise().mean(), cb = b.colwise().mean();
-  ca[2] = cb[2] = 0.0;
-  const xpbd::Positions p = a.rowwise() - ca, q = b.rowwise() - cb;
-  const double turn = std::atan2((p.col(0).array() * q.col(1).array() - p.col(1).array() * q.col(0).array()).sum(),
-                                 (p.col(0).array() * q.col(0).array() + p.col(1).array() * q.col(1).array()).sum());
-  const xpbd::Mat3 R = Eigen::AngleAxisd(turn, Vec3::UnitZ()).toRotationMatrix();
-  return std::sqrt((p * R.transpose() - q).rowwise().squaredNorm().mean());
-}
-
 }  // namespace
-
-std::vector<GrainContactRow> run_grain_contact(const ContactStudySettings& s) {
-  validate(s);
-  const RestingBody body = resting_body(s);
-  const xpbd::Positions pose = resting_pose(s, body, 0.5 * s.barrier_distance);
-  const double length = (body.mesh.V.colwise().maxCoeff() - body.mesh.V.colwise().minCoeff()).maxCoeff();
-  xpbd::Model reference = ground_model(s, body, pose);
-  fem::ImplicitSolver(reference, {.time_step = 1e-3, .newton = {.tolerance = 1e-10, .max_iterations = 300}},
-                      {.activation_distance = s.barrier_distance, .stiffness = s.barrier_stiffness})
-      .solve_static();
-  const xpbd::Positions reference_forces = holding_forces(reference);
-  struct Job {
-    xpbd::Method method;
-    int substeps, iterations;
-  };
-  std::vector<Job> jobs;
-  for (const int n : s.xpbd_substeps)
-    for (const int k : s.xpbd_iterations) jobs.push_back({xpbd::Method::kXpbd, n, k});
-  for (const int n : s.vbd_substeps)
-    for (const int k : s.vbd_grain_iterations) jobs.push_back({xpbd::Method::kVbd, n, k});
-  std::vector<GrainContactRow> rows(jobs.size());
-  for_each_item("contact: grain on the ground", static_cast<int>(jobs.size()), [&](int j) {
-    GrainContactRow& r = rows[j];
-    r.method = xpbd::method_name(jobs[j].method);
-    r.substeps = jobs[j].substeps;
-    r.iterations = jobs[j].iterations;
-    xpbd::Model model = ground_model(s, body, pose);
-    xpbd::Solver solver(model, {.time_step = 1.0 / 60.0, .substeps = r.substeps, .iterations = r.iterations,
-                                .method = jobs[j].method, .execution = xpbd::Execution::kSerial});
-    const auto start = Clock::now();
-    bool finite = true;
-    try {
-      for (int frame = 0; frame < 60; ++frame) solver.step();
-    } catch (const xpbd::SimulationError&) {
-      finite = false;
-    }
-    r.wall = seconds_since(start);
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    r.stable = finite &&
-               xpbd::tet_volumes(model.particles.x, body.mesh.T).minCoeff() > 0.0 &&
-               model.particles.v.rowwise().norm().maxCoeff() < 1e-2;
-    r.shape_error = finite ? shape_distance(model.particles.x, reference.particles.x) / length : nan;
-    r.force_error = finite ? (holding_forces(model) - reference_forces).norm() / reference_forces.norm() : nan;
-  });
-  return rows;
-}
 
 ContactStudySettings ContactStudySettings::quick() {
   ContactStudySettings s;
@@ -375,6 +260,8 @@ void validate(const ContactStudySettings& s) {
   if (!(s.barrier_distance > 0.0) || !(s.barrier_stiffness > 0.0) ||
       !(s.barrier_distance < 0.5 * s.depths.front() * s.radius))
     throw std::invalid_argument("contact study: the barrier's d-hat must be positive and under half the smallest depth");
+  if (!(s.load >= 0.0 && s.load <= 1000.0) || !(s.spring_stiffness > 0.0))
+    throw std::invalid_argument("contact study: the load must be in [0, 1000] weights and the springs' stiffness > 0");
   if (s.vbd_steps < 1 || s.vbd_iterations < 1)
     throw std::invalid_argument("contact study: vbd steps and iterations must be >= 1");
   for (const auto* list : {&s.xpbd_substeps, &s.xpbd_iterations, &s.vbd_substeps, &s.vbd_grain_iterations})
@@ -463,39 +350,40 @@ unset multiplot
 )");
 }
 
-/// Runs the grain part and writes contact_grain.csv and its plot.
-void grain_outputs(const ContactStudySettings& s, const std::filesystem::path& folder) {
-  const std::vector<GrainContactRow> grain_rows = run_grain_contact(s);
-  CsvTable grain_table({"method", "substeps", "iterations", "h_s", "stable", "shape_error_rel", "force_error_rel",
-                        "wall_s_per_sim_s"});
-  std::printf("\nGrain on the ground against the reference rest state\n%-5s %5s %3s %7s %12s %12s %10s\n", "",
-              "N", "K", "stable", "shape/len", "force", "wall [s/s]");
-  for (const GrainContactRow& r : grain_rows) {
-    grain_table.add_row({r.method, cell(r.substeps), cell(r.iterations), cell(1.0 / (60.0 * r.substeps)),
-                         cell(r.stable ? 1 : 0), cell(r.shape_error), cell(r.force_error), cell(r.wall)});
+/// Writes a grain scene's rows as `name`.csv and its plot: shape and contact-force errors
+/// against wall time; the title names the cheapest stable run of each method within 1% of
+/// the reference's rest shape.
+void grain_outputs(const std::vector<GrainContactRow>& rows, const std::filesystem::path& folder,
+                   const std::string& name, const std::string& scene) {
+  CsvTable table({"method", "substeps", "iterations", "h_s", "stable", "shape_error_rel", "force_error_rel",
+                  "wall_s_per_sim_s"});
+  std::printf("\n%s against the reference rest state\n%-5s %5s %3s %7s %12s %12s %10s\n", scene.c_str(), "", "N",
+              "K", "stable", "shape/len", "force", "wall [s/s]");
+  for (const GrainContactRow& r : rows) {
+    table.add_row({r.method, cell(r.substeps), cell(r.iterations), cell(1.0 / (60.0 * r.substeps)),
+                   cell(r.stable ? 1 : 0), cell(r.shape_error), cell(r.force_error), cell(r.wall)});
     std::printf("%-5s %5d %3d %7s %12.3e %12.3e %10.4f\n", r.method.c_str(), r.substeps, r.iterations,
                 r.stable ? "yes" : "NO", r.shape_error, r.force_error, r.wall);
   }
-  write_file_atomically(folder / "contact_grain.csv", grain_table.text());
-  // The finding: the cheapest stable run of each method with its shape within 1% of the reference's.
+  write_file_atomically(folder / (name + ".csv"), table.text());
   const auto cheapest = [&](const char* method) {
     const GrainContactRow* best = nullptr;
-    for (const GrainContactRow& r : grain_rows)
+    for (const GrainContactRow& r : rows)
       if (r.method == method && r.stable && r.shape_error < 1e-2 && (!best || r.wall < best->wall)) best = &r;
     if (!best) return std::string(method) + " never";
     return std::string(method) + " at N = " + std::to_string(best->substeps) + ", K = " + std::to_string(best->iterations) +
            " (" + fixed(best->wall, 3) + " s/s)";
   };
-  const std::string grain_title = "Grain at rest within 1% of the reference rest shape: " + cheapest("xpbd") + ", " +
-                                  cheapest("vbd");
-  std::printf("%s\n", grain_title.c_str());
-  render_plot(folder, "contact_grain", csv_plot_header("contact_grain", 1400, 600) +
-                                           "set multiplot layout 1,2 title '" + grain_title + "'\n" + kLogLogAxes + R"(set xlabel 'wall time per simulated second [s]'
+  const std::string title =
+      scene + " within 1% of the reference rest shape: " + cheapest("xpbd") + ", " + cheapest("vbd");
+  std::printf("%s\n", title.c_str());
+  render_plot(folder, name, csv_plot_header(name, 1400, 600) + "set multiplot layout 1,2 title '" + title + "'\n" +
+                                kLogLogAxes + R"(set xlabel 'wall time per simulated second [s]'
 set cblabel 'log2 substeps per frame'
 set key bottom left
 do for [col in '6 7'] {
-  set ylabel (col eq '6' ? 'RMS distance to the reference rest shape / grain length' : '|f − f_{ref}| / |f_{ref}| (holding forces)')
-  plot 'contact_grain.csv' using (strcol(1) eq 'xpbd' && $5 == 1 ? $8 : 1/0):(column(col+0)):(log($2)/log(2)) with points pt 7 ps 1.4 palette title 'XPBD (stable runs)', \
+  set ylabel (col eq '6' ? 'RMS distance to the reference rest shape / grain length' : '|f − f_{ref}| / |f_{ref}| (contact forces)')
+  plot ')" + name + R"(.csv' using (strcol(1) eq 'xpbd' && $5 == 1 ? $8 : 1/0):(column(col+0)):(log($2)/log(2)) with points pt 7 ps 1.4 palette title 'XPBD (stable runs)', \
        '' using (strcol(1) eq 'vbd' && $5 == 1 ? $8 : 1/0):(column(col+0)):(log($2)/log(2)) with points pt 5 ps 1.4 palette title 'vertex block descent'
 }
 unset multiplot
@@ -510,7 +398,9 @@ void contact_study_command(const ContactStudySettings& s, const std::filesystem:
   const auto start = Clock::now();
   hertz_outputs(s, folder);
   stop_point();
-  grain_outputs(s, folder);
+  grain_outputs(run_grain_contact(s), folder, "contact_grain", "Grain on the ground");
+  stop_point();
+  grain_outputs(run_grain_pair(s), folder, "contact_pair", "Two grains pressed");
   stop_point();
   write_file_atomically(folder / "run_info.txt",
                         run_info({{"study", "contact"},
@@ -521,6 +411,8 @@ void contact_study_command(const ContactStudySettings& s, const std::filesystem:
                                   {"barrier_stiffness_n_per_m", cell(s.barrier_stiffness)},
                                   {"vbd_steps", cell(s.vbd_steps)},
                                   {"vbd_iterations", cell(s.vbd_iterations)},
+                                  {"pair_load_weights", cell(s.load)},
+                                  {"spring_stiffness_n_per_m", cell(s.spring_stiffness)},
                                   {"wall_s", cell(seconds_since(start))}}));
   std::printf("wall time %.1f s\n", seconds_since(start));
 }

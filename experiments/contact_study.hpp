@@ -63,6 +63,10 @@ struct ContactStudySettings {
   std::vector<int> xpbd_iterations{2, 5, 20};
   std::vector<int> vbd_substeps{1, 2, 5, 10, 20};
   std::vector<int> vbd_grain_iterations{5, 20, 50};
+  /// Two grains pressed together: the load on the upper grain, in its weights.
+  double load = 5.0;
+  /// Stiffness of each of the four springs that hold a pressed grain sideways [N/m].
+  double spring_stiffness = 2.0;
 
   /// Two coarse resolutions and two depths, for CI (seconds).
   static ContactStudySettings quick();
@@ -83,18 +87,6 @@ struct HertzRow {
   double seconds = 0.0;      ///< wall time of this depth's solve
   double fastest = 0.0;      ///< vbd: fastest particle at the end [m/s]; reference: 0
 };
-
-/// One row of contact_grain.csv.
-struct GrainContactRow {
-  std::string method;  ///< "xpbd" or "vbd"
-  int substeps = 0, iterations = 0;
-  bool stable = false;         ///< finite, no inverted tet, slower than 1 cm/s at the end
-  double shape_error = 0.0;    ///< RMS distance to the reference's rest shape / grain length
-  double force_error = 0.0;    ///< ‖f − f_ref‖ / ‖f_ref‖ over particles
-  double wall = 0.0;           ///< [s per simulated second]
-};
-
-std::vector<GrainContactRow> run_grain_contact(const ContactStudySettings& settings);
 
 /// Throws std::invalid_argument naming the setting that is out of range.
 void validate(const ContactStudySettings& settings);

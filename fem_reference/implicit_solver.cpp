@@ -144,10 +144,13 @@ void ImplicitSolver::require_outside_obstacles(const Positions& x, const char* w
                               "another body, where the contact barrier is infinite (start everything apart)");
 }
 
-NewtonReport ImplicitSolver::solve_static() {
+NewtonReport ImplicitSolver::solve_static(const Positions* radii_shape) {
   hold_rigid_attachments();
   if (!contact_forms_.empty()) {
+    const Positions start = model_.particles.x;
+    if (radii_shape) model_.particles.x = *radii_shape;  // the radii follow model_'s shape
     prepare_contact(step_ * settings_.time_step);
+    model_.particles.x = start;
     require_outside_obstacles(model_.particles.x, "static solve");
   }
   report_ = static_->minimize(model_.particles.x);

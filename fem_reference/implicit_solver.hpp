@@ -64,8 +64,12 @@ class ImplicitSolver {
   /// Newton ends on a non-finite state; an unconverged solve is reported in report().
   void step();
 
-  /// Moves the model to a minimum of U(x) − fᵀx (velocities set to zero).
-  NewtonReport solve_static();
+  /// Moves the model to a minimum of U(x) − fᵀx (velocities set to zero). The collision
+  /// spheres' radii are held at those of the start shape, or of `radii_shape` when given: a
+  /// caller after the state where radii and shape agree, as XPBD's rest state (its radii follow
+  /// the shape every substep), solves again with radii from the last solution until it stops
+  /// moving.
+  NewtonReport solve_static(const Positions* radii_shape = nullptr);
 
   /// The Newton report of the last step() or solve_static().
   const NewtonReport& report() const { return report_; }

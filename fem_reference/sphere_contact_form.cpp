@@ -28,10 +28,11 @@ Vec3 centre(const Local& x, const Eigen::Vector4d& w, int offset) {
 }
 
 /// The most a step dx moves a sphere's centre: Σ_k |w_k| ‖dx_k‖.
-double centre_motion(const EmbeddedSphere& s, const Positions& dx) {
-  double motion = 0.0;
-  for (int k = 0; k < 4; ++k) motion += std::abs(s.weights[k]) * dx.row(s.particles[k]).norm();
-  return motion;
+/// Σ_k w_k p_k over sphere s's corners: its centre for positions, its motion for a step.
+Vec3 embedded_point(const EmbeddedSphere& s, const Positions& p) {
+  Vec3 sum = Vec3::Zero();
+  for (int k = 0; k < 4; ++k) sum += s.weights[k] * p.row(s.particles[k]).transpose();
+  return sum;
 }
 
 void update_radii(const xpbd::Model& model, std::vector<EmbeddedSphere>& spheres) {
@@ -121,13 +122,23 @@ SpherePairContactForm::LocalMatrix SpherePairContactForm::element_hessian(int e,
 }
 
 double SpherePairContactForm::max_step(const Positions& x, const Positions& dx) const {
-  // d is 1-Lipschitz in r, and r moves by at most the two centres' motions.
+  // The centres move linearly in the step t: r(t) = r + t q, q the difference of their
+  // motions. The step ends where ‖r(t)‖ first falls to R + d/10 (R = r_a + r_b, d the gap
+  // now): the smaller root of ‖r + t q‖² = (R + d/10)². Exact, so a sphere sliding around
+  // another (q across n) is not held back, as a bound on ‖q‖ alone would hold it.
   double step = 1.0;
   for (int e = 0; e < element_count(); ++e) {
-    const double approach = centre_motion(spheres_[pairs_[e][0]], dx) + centre_motion(spheres_[pairs_[e][1]], dx);
-    if (approach == 0.0) continue;
-    const double d = gap(e, gather(x, e)).d;
-    if (0.9 * d < step * approach) step = std::max(0.9 * d / approach, 0.0);
+    const EmbeddedSphere& a = spheres_[pairs_[e][0]];
+    const EmbeddedSphere& b = spheres_[pairs_[e][1]];
+    const Vec3 q = embedded_point(a, dx) - embedded_point(b, dx);
+    const Vec3 r = embedded_point(a, x) - embedded_point(b, x);
+    const double qq = q.squaredNorm(), rq = r.dot(q);
+    if (qq == 0.0 || rq >= 0.0) continue;  // not approaching
+    const double length = r.norm();
+    const double target = a.radius + b.radius + 0.1 * (length - a.radius - b.radius);
+    const double discriminant = rq * rq - qq * (length * length - target * target);
+    if (discriminant < 0.0) continue;  // passes by
+    step = std::min(step, std::max((-rq - std::sqrt(discriminant)) / qq, 0.0));
   }
   return step;
 }
@@ -201,9 +212,7 @@ double SpherePlaneContactForm::max_step(const Positions& x, const Positions& dx)
   double step = 1.0;
   for (int e = 0; e < element_count(); ++e) {
     const EmbeddedSphere& s = spheres_[elements_[e][0]];
-    Vec3 move = Vec3::Zero();
-    for (int k = 0; k < 4; ++k) move += s.weights[k] * dx.row(s.particles[k]).transpose();
-    const double approach = -planes_[elements_[e][1]].normal.dot(move);
+    const double approach = -planes_[elements_[e][1]].normal.dot(embedded_point(s, dx));
     if (!(approach > 0.0)) continue;
     const double d = gap(e, gather(x, e));
     if (0.9 * d < step * approach) step = std::max(0.9 * d / approach, 0.0);

@@ -436,6 +436,8 @@ void ContactSolver::end_substep(bool end_of_interval) {
   // pair, not each contact, keeps the contact that Gauss–Seidel visits first, which sees the
   // whole slip, from deciding for all.
   double deepest = 0.0;
+  collider_impulses_.resize(model_.colliders.size(), Vec3::Zero());
+  interval_time_ += h_;
   for (size_t first = 0; first < contacts_.size();) {
     const auto& key = states_[contacts_[first].state].key;
     const bool sliding = states_[contacts_[first].state].sliding;
@@ -451,6 +453,8 @@ void ContactSolver::end_substep(bool end_of_interval) {
       if (state.key[0] != key[0] || state.key[1] != key[1]) break;
       const ContactPoints p = locate(contact);
       deepest = std::max(deepest, -p.n.dot(p.pa - p.pb));
+      if (is_collider(key[1]))
+        collider_impulses_[collider_index(key[1])] -= (contact.lambda_normal * p.n + contact.friction) / h_;
       state.interval_normal += contact.lambda_normal;
       state.interval_friction += contact.friction;
       normal += state.interval_normal;
@@ -469,6 +473,13 @@ void ContactSolver::end_substep(bool end_of_interval) {
     first = last;
   }
   statistics_.max_penetration = deepest;
+  if (end_of_interval) {
+    statistics_.collider_forces.resize(collider_impulses_.size());
+    for (size_t c = 0; c < collider_impulses_.size(); ++c)
+      statistics_.collider_forces[c] = collider_impulses_[c] / interval_time_;
+    collider_impulses_.assign(collider_impulses_.size(), Vec3::Zero());
+    interval_time_ = 0.0;
+  }
   if (bonds_) update_bonds();
 }
 

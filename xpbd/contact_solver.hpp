@@ -42,6 +42,11 @@ struct ContactStatistics {
   double max_penetration = 0.0;  ///< largest −C over them at the end of the last substep [m]
   int bonds = 0;                 ///< cohesive bonds holding
   int bonds_broken = 0;          ///< body pairs whose bonds broke, since the start
+  /// Mean force each collider took from the grains over the last broad-phase interval, in the
+  /// model's collider order: −Σ (λ_n n + friction impulse) / h over its contacts and the
+  /// interval's substeps, divided by the interval's length [N]. At rest, the load on it (a
+  /// plate's squeezing force, a mould's pressing force); a mean, since a soft grain rings.
+  std::vector<Vec3> collider_forces;
 };
 
 class ContactSolver {
@@ -137,6 +142,8 @@ class ContactSolver {
   Model& model_;
   bool parallel_;
   std::vector<BodyPair> body_pairs_;
+  std::vector<Vec3> collider_impulses_;  ///< on each collider since the interval began [N s]
+  double interval_time_ = 0.0;           ///< its length so far [s]
   std::vector<std::array<int, 2>> sphere_pairs_;
   std::vector<ContactState> states_;
   std::vector<int> sphere_offset_;                ///< first sphere of each body in the arrays below

@@ -3,6 +3,8 @@
 // near-degenerate and inverted states, and the per-element PSD projection.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <random>
 
@@ -224,6 +226,27 @@ TEST(FormDerivatives, SphereContactBarriersMatchFiniteDifferences) {
   EXPECT_GT(step, 0.0);
   EXPECT_TRUE(std::isfinite(pairs.value(model.particles.x + step * dx)));
   EXPECT_FALSE(std::isfinite(pairs.value(model.particles.x + dx)));  // 1 mm down: through the lower grain
+  // The step is exact along the line, not a bound: it ends where some pair's gap has fallen to
+  // a tenth of its start and no pair's below that.
+  const auto gaps = [&](const Positions& x) {
+    xpbd::Model moved = model;
+    moved.particles.x = x;
+    std::vector<double> g;
+    for (int a = 0; a < moved.bodies[0].sphere_count(); ++a)
+      for (int b = 0; b < moved.bodies[1].sphere_count(); ++b)
+        g.push_back((xpbd::sphere_centre(moved, moved.bodies[0], a) - xpbd::sphere_centre(moved, moved.bodies[1], b)).norm() -
+                    xpbd::sphere_radius(moved, moved.bodies[0], a) - xpbd::sphere_radius(moved, moved.bodies[1], b));
+    return g;
+  };
+  const std::vector<double> before = gaps(model.particles.x), after = gaps(model.particles.x + step * dx);
+  double smallest_ratio = INFINITY;
+  for (size_t k = 0; k < before.size(); ++k) smallest_ratio = std::min(smallest_ratio, after[k] / before[k]);
+  EXPECT_NEAR(smallest_ratio, 0.1, 1e-6);
+  // Sliding 0.6 mm along the grain, over the lower one's spheres without closing any gap below
+  // a tenth, is a whole step (a bound on the centres' motion alone allowed some 5% of it).
+  dx.setZero();
+  dx.middleRows(upper.first_particle, upper.particle_count).col(0).setConstant(0.6e-3);
+  EXPECT_EQ(pairs.max_step(model.particles.x, dx), 1.0);
   // Colliders other than half-spaces are refused.
   xpbd::Collider ball;
   ball.shape = xpbd::ColliderShape::kSphere;

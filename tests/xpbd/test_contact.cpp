@@ -60,6 +60,12 @@ TEST_P(GrainContact, RestsOnAPlaneWithoutDrift) {
   EXPECT_LT((body_centre(model, grain) - start).norm(), 1e-6);
   EXPECT_LT(deepest, 0.01 * kGrainThickness);
   EXPECT_LT(solver.contacts()->statistics().max_penetration, 0.01 * kGrainThickness);
+  // At rest the plane carries the grain's weight, straight down.
+  const double weight = kGrainDensity * kGrainLength * kGrainWidth * kGrainThickness * 9.81;
+  ASSERT_EQ(solver.contacts()->statistics().collider_forces.size(), 1u);
+  const Vec3 load = solver.contacts()->statistics().collider_forces[0];
+  EXPECT_NEAR(load.z(), -weight, 0.01 * weight);
+  EXPECT_LT(load.head<2>().norm(), 0.01 * weight);
 }
 
 TEST_P(GrainContact, FallsAsleepOnAColliderAndStaysAsleep) {
