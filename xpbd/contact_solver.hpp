@@ -33,6 +33,7 @@
 #include "xpbd/broad_phase.hpp"
 #include "xpbd/cohesion_bonds.hpp"
 #include "xpbd/model.hpp"
+#include "xpbd/particle_contacts.hpp"
 
 namespace rice::xpbd {
 
@@ -73,6 +74,17 @@ class ContactSolver {
 
   const ContactStatistics& statistics() const { return statistics_; }
 
+  /// Vertex block descent: contacts of soft bodies' spheres with each other and with colliders
+  /// become terms of each particle's step (particle_contacts.hpp) from the next substep on,
+  /// instead of projections; contacts with rigid bodies stay projections. Friction is still
+  /// projected after each sweep, capped by the terms' forces.
+  void hold_in_particle_steps() { particle_steps_ = true; }
+  const ParticleContacts& particle_contacts() const { return particle_contacts_; }
+  /// After each sweep: takes the force each particle contact pushes with, max(0, λ − k C), as
+  /// its normal impulse (times h²) for friction, velocities and statistics. (Its multiplier
+  /// step is taken at the substep's end, in end_substep.)
+  void update_particle_contacts();
+
  private:
   /// What a sphere pair's contact carries from substep to substep, while its body pair stays
   /// in the broad phase: sphere s_a of body a against sphere s_b of body b, or against the
@@ -85,6 +97,7 @@ class ContactSolver {
     Vec3 anchor_a = Vec3::Zero(), anchor_b = Vec3::Zero();
     double interval_normal = 0.0;             ///< Σλ_n over the interval's substeps so far
     Vec3 interval_friction = Vec3::Zero();    ///< Σ friction impulses over them
+    double particle_force = 0.0;  ///< held in particle steps: its force λ at the last substep's end [N]
   };
   /// A body pair from the broad phase (or a body and a collider, b < 0) with its candidate
   /// sphere pairs (s_a, s_b), sphere_pairs_[first, last), increasing.
@@ -101,6 +114,7 @@ class ContactSolver {
     double lambda_normal = 0.0, lambda_tangent = 0.0;
     Vec3 friction = Vec3::Zero();  ///< sum of the friction impulses this substep
     bool capped = false;  ///< sliding friction reached μ_k λ_n in the last sweep
+    int particle_contact = -1;  ///< index in particle_contacts_ when held in particle steps
   };
   /// A contact's normal (world) and points at the current positions: p_a on a's sphere,
   /// p_b on b's sphere or on the collider, where that collider point was at the start.
@@ -136,6 +150,8 @@ class ContactSolver {
   template <class StateOf>
   void add_contacts(const BodyPair& pair, StateOf& state_of, std::vector<CohesionBonds::Touch>& touches);
   void project_normal(Contact& contact);
+  /// The particle-step form of a contact between soft spheres or a soft sphere and a collider.
+  ParticleContact particle_contact(const Contact& contact) const;
   void project_friction(Contact& contact, const Positions& x_previous);
   void update_bonds();
 
@@ -162,6 +178,8 @@ class ContactSolver {
   bool has_friction_ = false;
   std::optional<CohesionBonds> bonds_;  ///< only when cohesion is on
   double h_ = 0.0;  ///< the current substep's length
+  bool particle_steps_ = false;
+  ParticleContacts particle_contacts_;
 };
 
 }  // namespace rice::xpbd

@@ -71,7 +71,10 @@ Solver::Solver(Model& model, const SolverSettings& settings) : model_(model), se
   coloring_distance_ = color_constraints<2>(model.distances, p.size());
   coloring_volume_ = color_constraints<4>(model.volumes, p.size());
   coloring_neo_hookean_ = color_constraints<4>(model.neo_hookean, p.size());
-  if (settings.method == Method::kVbd) vbd_ = std::make_unique<VertexBlockDescent>(model);
+  if (settings.method == Method::kVbd) {
+    vbd_ = std::make_unique<VertexBlockDescent>(model);
+    if (contacts_) contacts_->hold_in_particle_steps();
+  }
 }
 
 Solver::~Solver() = default;
@@ -137,7 +140,9 @@ void Solver::substep(double h, bool end_of_interval) {
   }
   for (int k = 0; k < settings_.iterations; ++k) {
     iterate(h);
-    if (contacts_) contacts_->project(x_previous_);
+    if (!contacts_) continue;
+    if (vbd_) contacts_->update_particle_contacts();
+    contacts_->project(x_previous_);
   }
   Particles& p = model_.particles;
   p.v = (p.x - x_previous_) / h;
@@ -178,19 +183,24 @@ void Solver::start_vertex_block_descent(double h) {
   Particles& p = model_.particles;
   y_ = p.x;
   vbd_->begin_step(model_, x_previous_, h);
-  // x⁰ = y − h² g (1 − s), s = clamp(aⁿ·ĝ / |g|, 0, 1), aⁿ = (vⁿ − vⁿ⁻¹)/h; predict() made
-  // p.v = vⁿ + h a_ext, so vⁿ = p.v − h g for a particle without external force. Before the
-  // first substep aⁿ is unknown and s = 0: a body set down at rest at h = 1/60 s would
-  // otherwise start 2.7 mm below the ground, flattened on it, and jump.
-  const double g = model_.gravity.norm();
+  // x⁰ = y − h² a (1 − s), s = clamp(aⁿ·â / |a|, 0, 1), a = g + M⁻¹f_ext the particle's
+  // external acceleration and aⁿ = (vⁿ − vⁿ⁻¹)/h; predict() made p.v = vⁿ + h a, so
+  // vⁿ = p.v − h a. Before the first substep aⁿ is unknown and s = 0: a body set down at rest
+  // at h = 1/60 s would otherwise start 2.7 mm below the ground, flattened on it, and jump (and
+  // a grain pressed by a load of five weights 14 mm down, through what holds it).
+  const bool has_forces = model_.external_forces.rows() != 0;
   const bool known = v_previous_.rows() == p.size();
-  for (int i = 0; i < p.size() && g > 0.0; ++i) {
+  Positions v_start = p.v;
+  for (int i = 0; i < p.size(); ++i) {
     if (p.w[i] == 0.0 || (!asleep_particle_.empty() && asleep_particle_[i])) continue;
-    const Vec3 v_start = p.v.row(i).transpose() - h * model_.gravity;
+    Vec3 a = model_.gravity;
+    if (has_forces) a += p.w[i] * model_.external_forces.row(i).transpose();
+    const double aa = a.squaredNorm();
+    if (aa == 0.0) continue;
+    v_start.row(i) -= h * a.transpose();
     const double share =
-        known ? std::clamp((v_start - v_previous_.row(i).transpose()).dot(model_.gravity) / (h * g * g), 0.0, 1.0)
-              : 0.0;
-    p.x.row(i) -= (h * h * (1.0 - share)) * model_.gravity.transpose();
+        known ? std::clamp((v_start.row(i) - v_previous_.row(i)).dot(a.transpose()) / (h * aa), 0.0, 1.0) : 0.0;
+    p.x.row(i) -= (h * h * (1.0 - share)) * a.transpose();
   }
   // A guess below the ground flattens a body onto it before the sweeps start: keep the guess of
   // a particle that was above the plane on it.
@@ -202,7 +212,7 @@ void Solver::start_vertex_block_descent(double h) {
         p.x.row(i) += depth * ground.normal.transpose();
     }
   }
-  v_previous_ = p.v.rowwise() - h * model_.gravity.transpose();
+  v_previous_ = std::move(v_start);
 }
 
 void Solver::mark_sleeping() {
@@ -235,7 +245,8 @@ void Solver::for_each_constraint(const Coloring& coloring, Project&& project) {
 
 void Solver::iterate(double h) {
   if (settings_.method == Method::kVbd)
-    vbd_->sweep(model_, y_, settings_.execution == Execution::kParallel, asleep_particle_);
+    vbd_->sweep(model_, y_, settings_.execution == Execution::kParallel, asleep_particle_,
+                contacts_ ? &contacts_->particle_contacts() : nullptr);
   else
     for_each_constraint(coloring_neo_hookean_, [&](int c) { project_neo_hookean(c, h); });
   for_each_constraint(coloring_volume_, [&](int c) { project_volume(c, h); });
@@ -360,6 +371,7 @@ void Solver::project_attachments(double h) {
   Positions& x = model_.particles.x;
   for (size_t a = 0; a < model_.attachments.size(); ++a) {
     const Attachment& attachment = model_.attachments[a];
+    if (vbd_ && attachment.compliance > 0.0) continue;  // a spring of the particles' steps
     const double w = model_.particles.w[attachment.particle];
     const double alpha_tilde = attachment.compliance / (h * h);
     if (w + alpha_tilde == 0.0) continue;

@@ -58,6 +58,14 @@ VertexBlockDescent::VertexBlockDescent(const Model& model) {
     for (int k = 0; k < 4; ++k) corners_[next[t.particles[k]]++] = {static_cast<int>(e), k};
   }
   coloring_ = color_particles(model, first_corner_, corners_);
+  first_spring_.assign(n + 1, 0);
+  for (const Attachment& a : model.attachments)
+    if (a.compliance > 0.0) ++first_spring_[a.particle + 1];
+  for (int i = 0; i < n; ++i) first_spring_[i + 1] += first_spring_[i];
+  springs_.resize(first_spring_.back());
+  std::vector<int> slot(first_spring_.begin(), first_spring_.end() - 1);
+  for (size_t a = 0; a < model.attachments.size(); ++a)
+    if (model.attachments[a].compliance > 0.0) springs_[slot[model.attachments[a].particle]++] = static_cast<int>(a);
 }
 
 void VertexBlockDescent::begin_step(const Model& model, const Positions& x_start, double h) {
@@ -76,12 +84,14 @@ void VertexBlockDescent::begin_step(const Model& model, const Positions& x_start
   });
 }
 
-void VertexBlockDescent::sweep(Model& model, const Positions& y, bool parallel,
-                               const std::vector<char>& frozen) const {
+void VertexBlockDescent::sweep(Model& model, const Positions& y, bool parallel, const std::vector<char>& frozen,
+                               const ParticleContacts* contacts) const {
+  if (contacts && contacts->empty()) contacts = nullptr;
   const auto visit = [&](int i) {
     if (model.particles.w[i] == 0.0 || (!frozen.empty() && frozen[i])) return;
-    solve_particle(model, y, i);
+    solve_particle(model, y, i, contacts);
   };
+  const auto in_contact = [&](int i) { return contacts && contacts->touches(i); };
   for (int color = 0; color < coloring_.colors(); ++color) {
     const auto members = coloring_.color(color);
     if (!parallel) {
@@ -89,15 +99,24 @@ void VertexBlockDescent::sweep(Model& model, const Positions& y, bool parallel,
       continue;
     }
     tbb::parallel_for(tbb::blocked_range<size_t>(0, members.size(), 64), [&](const tbb::blocked_range<size_t>& range) {
-      for (size_t m = range.begin(); m != range.end(); ++m) visit(members[m]);
+      for (size_t m = range.begin(); m != range.end(); ++m)
+        if (!in_contact(members[m])) visit(members[m]);
     });
+    for (const int i : members)
+      if (in_contact(i)) visit(i);
   }
 }
 
-double VertexBlockDescent::particle_energy(const Model& model, const Positions& y, int i, const Vec3& xi) const {
+double VertexBlockDescent::particle_energy(const Model& model, const Positions& y, int i, const Vec3& xi,
+                                           const ParticleContacts* contacts) const {
   const Positions& x = model.particles.x;
   const Vec3 offset = xi - position(x, i);
   double energy = 0.5 / (model.particles.w[i] * h_ * h_) * (xi - position(y, i)).squaredNorm();
+  if (contacts) energy += contacts->particle_energy(x, i, offset);
+  for (int s = first_spring_[i]; s < first_spring_[i + 1]; ++s) {
+    const Attachment& a = model.attachments[springs_[s]];
+    energy += 0.5 / a.compliance * (xi - a.target).squaredNorm();
+  }
   for (int c = first_corner_[i]; c < first_corner_[i + 1]; ++c) {
     const NeoHookeanTet& t = model.neo_hookean[corners_[c].tet];
     const Mat3 F = deformation(x, t) + offset * stencil_weights(t.Dm_inv, corners_[c].k).transpose();
@@ -116,7 +135,8 @@ double VertexBlockDescent::particle_energy(const Model& model, const Positions& 
   return energy;
 }
 
-void VertexBlockDescent::solve_particle(Model& model, const Positions& y, int i) const {
+void VertexBlockDescent::solve_particle(Model& model, const Positions& y, int i,
+                                        const ParticleContacts* contacts) const {
   Positions& x = model.particles.x;
   const double inertia = 1.0 / (model.particles.w[i] * h_ * h_);  // m_i / h²
   Vec3 gradient = inertia * (position(x, i) - position(y, i));
@@ -145,6 +165,12 @@ void VertexBlockDescent::solve_particle(Model& model, const Positions& y, int i)
       hessian += scale * strain_rate_damping_vertex_hessian(F_start, b, t.mu, t.lambda_lame());
     }
   }
+  if (contacts) contacts->add_particle_terms(x, i, gradient, hessian);
+  for (int s = first_spring_[i]; s < first_spring_[i + 1]; ++s) {
+    const Attachment& a = model.attachments[springs_[s]];
+    gradient += (position(x, i) - a.target) / a.compliance;
+    hessian += Mat3::Identity() / a.compliance;
+  }
   Mat3 system = hessian + inertia * Mat3::Identity();
   Eigen::LLT<Mat3> newton(system);
   if (newton.info() != Eigen::Success) {
@@ -168,9 +194,9 @@ void VertexBlockDescent::solve_particle(Model& model, const Positions& y, int i)
     position(x, i) += step;
     return;
   }
-  const double energy = particle_energy(model, y, i, xi);
+  const double energy = particle_energy(model, y, i, xi, contacts);
   int halvings = 0;
-  while (particle_energy(model, y, i, xi + step) > energy) {
+  while (particle_energy(model, y, i, xi + step, contacts) > energy) {
     step *= 0.5;
     if (++halvings == 8) return;
   }

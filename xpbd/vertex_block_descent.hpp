@@ -19,6 +19,13 @@
 // make H_i indefinite, and then H_i − m_i/h² I is projected onto the PSD cone and a step that
 // would raise E is halved until it does not. Every sweep lowers E.
 //
+// Contacts between soft bodies' collision spheres, and of those with colliders, are terms of
+// E held by an augmented Lagrangian (particle_contacts.hpp), so the sweeps' fixed point is the
+// step with its contact forces, as the reference's barrier gives it (without a gap).
+//
+// Compliant attachments are springs ½‖x_i − p‖²/α in E (the reference's potential for them);
+// those with α = 0 stay projections after each sweep (solver.cpp).
+//
 // A ground plane (Model::ground) is a constraint of each particle's step. When the Newton
 // step would end below the plane, the normal force f_n is that of the step's minimiser on the
 // plane (one multiplier, closed form); the particle then sticks where it was at the step's
@@ -30,7 +37,8 @@
 // later particles had already answered, and the sweeps' fixed point would not be the rest
 // state (a grain resting at h = 1/60 s stood 10% taller with 20 sweeps).
 //
-// The solver (solver.hpp) runs K sweeps per substep for Method::kVbd.
+// The solver (solver.hpp) runs K sweeps per substep for Method::kVbd, updating the contacts'
+// forces after each.
 #pragma once
 
 #include <Eigen/Cholesky>
@@ -38,6 +46,7 @@
 
 #include "xpbd/graph_coloring.hpp"
 #include "xpbd/model.hpp"
+#include "xpbd/particle_contacts.hpp"
 
 namespace rice::xpbd {
 
@@ -53,7 +62,11 @@ class VertexBlockDescent {
 
   /// One Gauss–Seidel sweep over the particles of tets, colour by colour. Pinned particles
   /// (w = 0) and those marked in `frozen` (sleeping bodies; may be empty) stay.
-  void sweep(Model& model, const Positions& y, bool parallel, const std::vector<char>& frozen) const;
+  /// `contacts` (may be null): contacts held in the particles' steps (particle_contacts.hpp);
+  /// their particles, which a colour may share through them, are visited one after another
+  /// after the rest of their colour.
+  void sweep(Model& model, const Positions& y, bool parallel, const std::vector<char>& frozen,
+             const ParticleContacts* contacts = nullptr) const;
 
  private:
   struct Corner {
@@ -61,15 +74,19 @@ class VertexBlockDescent {
     int k;  ///< the particle's corner in the tet, 0..3
   };
   /// One particle's Newton step.
-  void solve_particle(Model& model, const Positions& y, int i) const;
+  void solve_particle(Model& model, const Positions& y, int i, const ParticleContacts* contacts) const;
   /// The terms of E that involve particle i, with x_i at `xi` (up to constants).
-  double particle_energy(const Model& model, const Positions& y, int i, const Vec3& xi) const;
+  double particle_energy(const Model& model, const Positions& y, int i, const Vec3& xi,
+                         const ParticleContacts* contacts) const;
   /// Particle i's step when its Newton step would end below the ground, with Coulomb friction
   /// in force terms on its local quadratic q(Δ) = ½ΔᵀHΔ + gᵀΔ (H = `H`, factored in `newton`).
   static Vec3 ground_contact_step(const GroundPlane& ground, const Vec3& x, const Vec3& x_start, const Mat3& H,
                                   const Eigen::LLT<Mat3>& newton, const Vec3& g);
 
   std::vector<int> first_corner_;  ///< CSR: particle i's corners are corners_[first_corner_[i] .. [i + 1])
+  /// Compliant attachments (α > 0) as springs ½‖x_i − p‖²/α of E: particle i's are
+  /// springs_[first_spring_[i] .. [i + 1]), indices into Model::attachments.
+  std::vector<int> first_spring_, springs_;
   std::vector<Corner> corners_;
   Coloring coloring_;  ///< particles of tets grouped so that no two of a colour share a tet
   std::vector<Vec2> C_start_;
