@@ -193,7 +193,7 @@ struct CommandLine::Commands {
     pour_cmd->add_option("--iterations", pour.iterations, "Gauss-Seidel sweeps per substep")
         ->check(number_in(1, 1000))->capture_default_str();
     pour_cmd->add_flag("--vbd", pour.vertex_block_descent,
-                       "soft grains by vertex block descent; experimental: a pile does not settle yet (README)");
+                       "soft grains by vertex block descent; experimental: with cohesive bonds a pile gains energy (README)");
     pour_cmd->add_option("--young", pour.young, "soft grains' Young's modulus [Pa]")->check(number_in(1e3, 1e9))
         ->capture_default_str();
     pour_cmd->add_option("--soak-minutes", pour.soak_minutes, "soaking time [min]")
