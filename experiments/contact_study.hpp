@@ -21,15 +21,13 @@
 // to slide); the second depends only on the field near the contact and falls as the mesh
 // there refines.
 //
-// Grain on the ground: a japonica grain (E = 100 kPa) set down undeformed, in a pose where it
-// rests stably (found by the reference), on a frictionless ground under gravity. The reference's static solve gives its
-// rest shape and the contact force on each particle (the barrier's); XPBD and vertex block
-// descent run one second over a grid of substeps N and iterations K, and their final shape
-// (horizontal drift removed) and contact forces (f_i = ∂U/∂x_i − m_i g, what holds each particle
-// at rest) are compared with the reference's: what contact accuracy costs in time.
+// The grain scenes (grain_contact.hpp): a grain on the ground and two grains pressed
+// together, XPBD and vertex block descent over substeps N and iterations K against the
+// reference's rest shape and contact forces: what contact accuracy costs in time.
 //
 // Writes contact_hertz.csv, contact_hertz.png (force against depth beside Hertz; error against
-// the mesh's edge at the contact), contact_grain.csv, contact_grain.png and run_info.txt.
+// the mesh's edge at the contact), contact_grain.csv/.png, contact_pair.csv/.png and
+// run_info.txt.
 #pragma once
 
 #include <filesystem>

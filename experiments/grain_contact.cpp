@@ -53,17 +53,16 @@ Mat3 flat_rotation(const xpbd::Positions& points) {
   return flat;
 }
 
-fem::BarrierSettings barrier_settings(const ContactStudySettings& s) {
-  return {.activation_distance = s.barrier_distance, .stiffness = s.barrier_stiffness};
+/// The reference for static solves of `model`, with the study's barrier.
+fem::ImplicitSolver reference_solver(xpbd::Model& model, const ContactStudySettings& s) {
+  return fem::ImplicitSolver(model, {.time_step = 1e-3, .newton = {.tolerance = 1e-10, .max_iterations = 300}},
+                             {.activation_distance = s.barrier_distance, .stiffness = s.barrier_stiffness});
 }
 
 /// The reference's static solve of `model` in place.
 void solve_reference(xpbd::Model& model, const ContactStudySettings& s) {
-  const fem::NewtonReport report =
-      fem::ImplicitSolver(model, {.time_step = 1e-3, .newton = {.tolerance = 1e-10, .max_iterations = 300}},
-                          barrier_settings(s))
-          .solve_static();
-  if (!report.converged) throw std::runtime_error("contact study: the reference's static solve did not converge");
+  if (!reference_solver(model, s).solve_static().converged)
+    throw std::runtime_error("contact study: the reference's static solve did not converge");
 }
 
 /// f_i = ∂U/∂x_i − m_i g − f_ext,i − (spring force on i): what contacts hold each particle
@@ -196,8 +195,10 @@ double lift_to_clear(const xpbd::SphereSet& upper, const xpbd::SphereSet& lower,
 /// face held, the upper shifted by half the sphere spacing along the length (its spheres in
 /// the dips between the lower's) and lifted until each sphere gap is at least d̂/2; the load
 /// on the upper box's particles, the springs at its bottom corners.
+constexpr double kPairLength = 7e-3;  ///< the pair's boxes [m]
+
 xpbd::Model pair_model(const ContactStudySettings& s) {
-  constexpr double length = 7e-3, width = 3e-3, thickness = 2e-3, r = 0.5 * thickness;
+  constexpr double length = kPairLength, width = 3e-3, thickness = 2e-3, r = 0.5 * thickness;
   constexpr int rows = 2, per_row = 5;
   const double dx = (length - 2 * r) / (per_row - 1), dy = (width - 2 * r) / (rows - 1);
   xpbd::Model model;
@@ -225,12 +226,12 @@ xpbd::Model pair_model(const ContactStudySettings& s) {
   for (int i = upper.first_particle; i < upper.first_particle + upper.particle_count; ++i)
     model.external_forces.row(i) = s.load * model.gravity.transpose() / model.particles.w[i];
   // The springs, at the upper box's four bottom corners, towards where they start.
-  const xpbd::Positions corners = model.particles.x.middleRows(upper.first_particle, upper.particle_count);
-  const double bottom_z = corners.col(2).minCoeff();
+  const xpbd::Positions box = model.particles.x.middleRows(upper.first_particle, upper.particle_count);
   for (int i = 0; i < upper.particle_count; ++i) {
-    const Vec3 p = corners.row(i).transpose();
-    const bool corner = p.z() == bottom_z && (p.x() == corners.col(0).minCoeff() || p.x() == corners.col(0).maxCoeff()) &&
-                        (p.y() == corners.col(1).minCoeff() || p.y() == corners.col(1).maxCoeff());
+    const Vec3 p = box.row(i).transpose();
+    const bool corner = p.z() == box.col(2).minCoeff() &&
+                        (p.x() == box.col(0).minCoeff() || p.x() == box.col(0).maxCoeff()) &&
+                        (p.y() == box.col(1).minCoeff() || p.y() == box.col(1).maxCoeff());
     if (corner) model.attachments.push_back({upper.first_particle + i, p, 1.0 / s.spring_stiffness});
   }
   return model;
@@ -241,8 +242,7 @@ xpbd::Model pair_model(const ContactStudySettings& s) {
 /// (radii only shrink under load, r₀ min(1, σ_min), so the start stays clear of every barrier).
 xpbd::Model pair_reference(const ContactStudySettings& s, const xpbd::Model& start, double length) {
   xpbd::Model reference = start;
-  fem::ImplicitSolver solver(reference, {.time_step = 1e-3, .newton = {.tolerance = 1e-10, .max_iterations = 300}},
-                             barrier_settings(s));
+  fem::ImplicitSolver solver = reference_solver(reference, s);
   xpbd::Positions shape = start.particles.x;
   for (int pass = 0; pass < 50; ++pass) {
     reference.particles.x = start.particles.x;
@@ -274,7 +274,7 @@ std::vector<GrainContactRow> run_grain_contact(const ContactStudySettings& s) {
 
 std::vector<GrainContactRow> run_grain_pair(const ContactStudySettings& s) {
   validate(s);
-  const double length = 7e-3;
+  const double length = kPairLength;
   const xpbd::Model start = pair_model(s);
   const xpbd::Model reference = pair_reference(s, start, length);
   const xpbd::Positions reference_forces = contact_forces(reference);

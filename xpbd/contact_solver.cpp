@@ -272,12 +272,12 @@ void ContactSolver::begin_substep(double time, double h, const Positions& x_prev
     if (model_.bodies[a].kind != BodyKind::kSoft || (!is_collider(b) && model_.bodies[b].kind != BodyKind::kSoft))
       continue;
     contact.particle_contact = static_cast<int>(particle_contacts_.contacts().size());
-    particle_contacts_.add(particle_contact(contact));
+    particle_contacts_.add(make_particle_contact(contact));
   }
   particle_contacts_.index(model_.particles.size());
 }
 
-ParticleContact ContactSolver::particle_contact(const Contact& contact) const {
+ParticleContact ContactSolver::make_particle_contact(const Contact& contact) const {
   const auto [a, b, sa, sb] = states_[contact.state].key;
   ParticleContact c;
   c.force = states_[contact.state].particle_force;

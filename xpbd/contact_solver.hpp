@@ -151,7 +151,7 @@ class ContactSolver {
   void add_contacts(const BodyPair& pair, StateOf& state_of, std::vector<CohesionBonds::Touch>& touches);
   void project_normal(Contact& contact);
   /// The particle-step form of a contact between soft spheres or a soft sphere and a collider.
-  ParticleContact particle_contact(const Contact& contact) const;
+  ParticleContact make_particle_contact(const Contact& contact) const;
   void project_friction(Contact& contact, const Positions& x_previous);
   void update_bonds();
 

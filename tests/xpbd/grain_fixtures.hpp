@@ -3,6 +3,9 @@
 // sphere union spans the box. Lying flat, its lowest point is 1 mm below the sphere centres.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 #include "xpbd/body.hpp"
 #include "xpbd/model.hpp"
 
@@ -34,6 +37,14 @@ inline int add_grain(Model& model, BodyKind kind, const Vec3& corner, double you
   if (kind == BodyKind::kRigid) return add_rigid_body(model, grain_mesh(corner), kGrainDensity, grain_spheres(corner));
   return add_soft_body(model, grain_mesh(corner), kGrainDensity, lame_from_young_poisson(young, 0.3), 0.0,
                        grain_spheres(corner));
+}
+
+/// Lowest point of body b's sphere union (radii as they are now, sphere_radius).
+inline double lowest_point(const Model& model, int b) {
+  double lowest = INFINITY;
+  for (int s = 0; s < model.bodies[b].sphere_count(); ++s)
+    lowest = std::min(lowest, sphere_centre(model, model.bodies[b], s).z() - sphere_radius(model, model.bodies[b], s));
+  return lowest;
 }
 
 /// Centre of mass of body b.

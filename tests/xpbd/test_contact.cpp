@@ -36,14 +36,6 @@ SolverSettings scene_settings(BodyKind kind, double time_step, int substeps) {
   return s;
 }
 
-/// Lowest point of the grain's sphere union.
-double lowest_point(const Model& model, int b) {
-  double lowest = INFINITY;
-  for (int s = 0; s < model.bodies[b].sphere_count(); ++s)
-    lowest = std::min(lowest, sphere_centre(model, model.bodies[b], s).z() - model.bodies[b].radii[s]);
-  return lowest;
-}
-
 TEST_P(GrainContact, RestsOnAPlaneWithoutDrift) {
   // Issue: 1000 steps at rest on a plane, drift < 1e-6 m, penetration < 1% of the thickness.
   Model model;

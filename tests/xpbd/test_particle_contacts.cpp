@@ -73,14 +73,6 @@ TEST(ParticleContacts, TheForceStepStopsWhereTheContactTouchesOrParts) {
   EXPECT_EQ(contacts.contacts()[0].force, 0.0);
 }
 
-/// Lowest point of the grain's sphere union.
-double lowest_point(const Model& model, int b) {
-  double lowest = INFINITY;
-  for (int s = 0; s < model.bodies[b].sphere_count(); ++s)
-    lowest = std::min(lowest, sphere_centre(model, model.bodies[b], s).z() - sphere_radius(model, model.bodies[b], s));
-  return lowest;
-}
-
 TEST(ParticleContacts, ASoftGrainRestsOnAPlaneAtOneStepPerFrame) {
   // Vertex block descent at h = 1/60 s, 20 sweeps: the plane is a half-space collider met by
   // the grain's spheres. After a second on it the grain's spheres stay within 5 µm of the
