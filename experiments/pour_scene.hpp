@@ -48,8 +48,9 @@ struct PourSettings {
   int substeps = 0;
   int iterations = 1;
   /// Soft grains' tets by vertex block descent (xpbd::Method::kVbd) instead of XPBD's
-  /// projections. Experimental: contacts between grains are still projected after each sweep,
-  /// and a pile does not settle (README "Known limits").
+  /// projections. Experimental: contacts are terms of each particle's step, but cohesive bonds
+  /// stay projections after each sweep, and with them a pile gains energy (README "Known
+  /// limits"; without cohesion it settles).
   bool vertex_block_descent = false;
   double young = 1e5;  ///< soft grains [Pa]: cooked rice kernels are soft (0.1–1 MPa; ESTIMATE)
   double poisson = 0.3;
