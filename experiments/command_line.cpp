@@ -23,6 +23,8 @@
 #include "experiments/oscillator_study.hpp"
 #include "experiments/pour_scene.hpp"
 #include "experiments/pour_substep_study.hpp"
+#include "experiments/scene_file.hpp"
+#include "experiments/scene_run.hpp"
 #include "experiments/grain_substep_study.hpp"
 #include "experiments/contact_study.hpp"
 #include "experiments/render_command.hpp"
@@ -153,6 +155,10 @@ struct CommandLine::Commands {
   bool render_no_shadows = false, render_no_ao = false, render_no_ground = false, render_side_by_side = false;
   std::string render_sky_image, render_pour;
 
+  CLI::App* run_cmd = nullptr;
+  std::string run_scene, run_out = "out/scene";
+  std::vector<std::string> run_overrides;
+
   CLI::App* pour_cmd = nullptr;
   PourSettings pour;
   std::string pour_out = "out/pour", pour_body = "rigid", pour_container = "chawan";
@@ -166,6 +172,14 @@ struct CommandLine::Commands {
     add_render();
     add_figures();
     add_pour();
+    add_run();
+  }
+
+  void add_run() {
+    run_cmd = app.add_subcommand("run", "runs a scene file (experiments/scenes/*.toml)");
+    run_cmd->add_option("scene", run_scene, "the scene's TOML file")->required();
+    run_cmd->add_option("--out", run_out, "output folder")->capture_default_str();
+    run_cmd->add_option("--set", run_overrides, "section.key=value: overrides a key of the file (repeatable)");
   }
 
   void add_pour() {
@@ -579,6 +593,7 @@ void CommandLine::validate() const {
   if (*c.figure11_cmd) experiments::validate(c.absorption);
   if (*c.figure13_cmd) experiments::validate(c.figure13);
   if (*c.pour_cmd) experiments::validate(c.pour_settings());
+  if (*c.run_cmd) experiments::validate(read_scene_file(c.run_scene, c.run_overrides).pour);
   if (*c.render_cmd) experiments::validate(c.render_settings());
   if (*c.pour_substeps_cmd) experiments::validate(c.pour_substeps_settings());
   if (*c.grain_substeps_cmd) experiments::validate(c.grain_substeps);
@@ -600,6 +615,7 @@ void CommandLine::run() const {
   if (*c.figure11_cmd) water_absorption_figure_command(c.absorption, c.absorption_out);
   if (*c.figure13_cmd) figure13_command(c.figure13, c.figure13_out);
   if (*c.pour_cmd) pour_command(c.pour_settings(), c.pour_out);
+  if (*c.run_cmd) run_scene_command(c.run_scene, c.run_overrides, c.run_out);
   if (*c.render_cmd) render_command(c.render_settings(), c.render_out);
 }
 

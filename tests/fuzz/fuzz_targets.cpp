@@ -5,6 +5,7 @@
 #include <optional>
 #include <sstream>
 
+#include "experiments/scene_file.hpp"
 #include "grains/absorption_table.hpp"
 #include "grains/mesh_io.hpp"
 
@@ -87,11 +88,33 @@ void read_absorption(std::string_view bytes) {
            "a sample outside the documented ranges");
 }
 
+void read_scene(std::string_view bytes) {
+  const auto scene = read_or_refuse([&] { return experiments::parse_scene(bytes, kName); });
+  if (!scene) return;
+  const experiments::PourSettings& p = scene->pour;
+  expect(p.count >= 1 && p.count <= 100000 && p.variants >= 1 && p.variants <= 1000 && p.frames >= 1 &&
+             p.frames <= 100000 && p.substeps >= 0 && p.substeps <= 10000 && p.iterations >= 1 &&
+             p.iterations <= 1000,
+         "a count outside the documented ranges");
+  expect(p.fps > 0.0 && p.fps <= 1000.0 && p.young >= 1e3 && p.young <= 1e9 && p.poisson > -1.0 && p.poisson < 0.5 &&
+             p.soak_minutes > 0.0 && p.soak_minutes <= 1e5 && p.soak_temperature >= 0.0 &&
+             p.soak_temperature <= 100.0 && p.grid_spacing >= 2e-4 && p.grid_spacing <= 1e-2 &&
+             p.spout_height >= 0.0 && p.spout_height <= 10.0 && p.pour_seconds >= 0.0 && p.pour_seconds <= 1e4,
+         "a number outside the documented ranges");
+  expect(p.dynamic_friction >= 0.0 && p.dynamic_friction <= p.static_friction && p.static_friction <= 10.0,
+         "friction coefficients outside 0 <= mu_k <= mu_s <= 10");
+  expect(!p.vertex_block_descent || p.body == xpbd::BodyKind::kSoft, "vertex block descent on rigid grains");
+  const experiments::SceneDescription again = experiments::parse_scene(bytes, kName);
+  expect(again.name == scene->name && again.pour.count == p.count && again.pour.seed == p.seed,
+         "two reads of one input differ");
+}
+
 }  // namespace
 
 const std::vector<Target>& targets() {
   static const std::vector<Target> all = {
-      {"obj", read_obj}, {"off", read_off}, {"ply", read_ply}, {"medit", medit_round_trip}, {"absorption", read_absorption}};
+      {"obj", read_obj}, {"off", read_off}, {"ply", read_ply}, {"medit", medit_round_trip}, {"absorption", read_absorption},
+      {"scene", read_scene}};
   return all;
 }
 

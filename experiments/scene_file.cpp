@@ -1,0 +1,235 @@
+// Reading scene files strictly (toml++); see scene_file.hpp.
+#include "experiments/scene_file.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+#include "grains/cultivar.hpp"
+
+namespace rice::experiments {
+namespace {
+
+std::string at(const std::string& source, const toml::source_region& region) {
+  return (region.path ? std::string(*region.path) : source) + ":" + std::to_string(region.begin.line);
+}
+
+/// The shortest text that reads back as `value`.
+std::string number_text(double value) {
+  char buffer[32];
+  return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+}
+
+std::string in_quotes(std::string_view text) {
+  std::string out(1, '\'');  // appended, not "'" + text: gcc 12 warns falsely (-Wrestrict) on that
+  out.append(text);
+  out.push_back('\'');
+  return out;
+}
+
+std::string joined(const std::vector<std::string>& words) {
+  std::string out;
+  for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
+  return out;
+}
+
+/// A value as a file would write it, for messages.
+std::string shown(const toml::node& node) {
+  if (const auto* text = node.as_string()) return '"' + text->get() + '"';
+  if (const auto* number = node.as_floating_point()) return number_text(number->get());
+  std::ostringstream out;
+  node.visit([&](const auto& value) { out << value; });
+  return out.str();
+}
+
+/// Reads the keys of one section; finish() refuses any key nobody asked for.
+class Section {
+ public:
+  Section(const toml::table* table, std::string source, std::string name)
+      : table_(table), source_(std::move(source)), name_(std::move(name)) {}
+
+  double number(const std::string& key, double fallback, const std::function<bool(double)>& accepts,
+                const std::string& expected) {
+    const toml::node* node = find(key);
+    if (!node) return fallback;
+    const std::optional<double> value = node->is_number() ? node->value<double>() : std::nullopt;
+    if (!value || !std::isfinite(*value) || !accepts(*value)) fail(*node, key, expected);
+    return *value;
+  }
+  double number_in(const std::string& key, double fallback, double low, double high) {
+    return number(key, fallback, [&](double v) { return v >= low && v <= high; },
+                  "a number in [" + number_text(low) + ", " + number_text(high) + "]");
+  }
+  long integer_in(const std::string& key, long fallback, long low, long high) {
+    const toml::node* node = find(key);
+    if (!node) return fallback;
+    const std::optional<std::int64_t> value = node->is_integer() ? node->value<std::int64_t>() : std::nullopt;
+    if (!value || *value < low || *value > high)
+      fail(*node, key, "an integer in [" + std::to_string(low) + ", " + std::to_string(high) + "]");
+    return static_cast<long>(*value);
+  }
+  bool flag(const std::string& key, bool fallback) {
+    const toml::node* node = find(key);
+    if (!node) return fallback;
+    if (!node->is_boolean()) fail(*node, key, "true or false");
+    return *node->value<bool>();
+  }
+  std::string text(const std::string& key, const std::string& fallback) {
+    const toml::node* node = find(key);
+    if (!node) return fallback;
+    if (!node->is_string()) fail(*node, key, "a text in quotes");
+    return *node->value<std::string>();
+  }
+  std::string choice(const std::string& key, const std::string& fallback, const std::vector<std::string>& options) {
+    const toml::node* node = find(key);
+    if (!node) return fallback;
+    std::vector<std::string> names;
+    for (const std::string& o : options) names.push_back(in_quotes(o));
+    if (!node->is_string() || std::find(options.begin(), options.end(), *node->value<std::string>()) == options.end())
+      fail(*node, key, "one of " + joined(names));
+    return *node->value<std::string>();
+  }
+  bool has(const std::string& key) const { return table_ && table_->get(key); }
+  /// Throws when `ok` is false, naming the key (which must be in the file).
+  void require(bool ok, const std::string& key, const std::string& expected) const {
+    if (!ok) fail(*table_->get(key), key, expected);
+  }
+  void finish() const {
+    if (!table_) return;
+    for (auto&& [key, node] : *table_)
+      if (std::find(asked_.begin(), asked_.end(), key.str()) == asked_.end())
+        throw SceneError(at(source_, key.source()) + ": [" + name_ + "] has no key " + in_quotes(key.str()) +
+                         "; its keys: " + joined(asked_));
+  }
+
+ private:
+  const toml::node* find(const std::string& key) {
+    asked_.push_back(key);
+    return table_ ? table_->get(key) : nullptr;
+  }
+  [[noreturn]] void fail(const toml::node& node, const std::string& key, const std::string& expected) const {
+    throw SceneError(at(source_, node.source()) + ": [" + name_ + "] " + key + " = " + shown(node) + ": expected " +
+                     expected);
+  }
+
+  const toml::table* table_;
+  std::string source_, name_;
+  std::vector<std::string> asked_;
+};
+
+const std::vector<std::string> kSections{"scene", "grains", "solver", "container", "emitter", "effects"};
+
+toml::table parse_toml(std::string_view text, const std::string& source) {
+  try {
+    return toml::parse(text, std::string_view(source));
+  } catch (const toml::parse_error& e) {
+    throw SceneError(at(source, e.source()) + ": " + std::string(e.description()));
+  }
+}
+
+/// Applies "section.key=value" to the document.
+void apply_override(toml::table& document, const std::string& assignment) {
+  const std::string source = "--set " + assignment;
+  const size_t equals = assignment.find('='), dot = assignment.find('.');
+  if (equals == std::string::npos || dot == std::string::npos || dot > equals)
+    throw SceneError(source + ": expected section.key=value");
+  const std::string section = assignment.substr(0, dot), key = assignment.substr(dot + 1, equals - dot - 1);
+  if (std::find(kSections.begin(), kSections.end(), section) == kSections.end())
+    throw SceneError(source + ": there is no section " + in_quotes(section) + "; sections: " + joined(kSections));
+  toml::table value = parse_toml("v = " + assignment.substr(equals + 1), source);
+  toml::node* existing = document.get(section);
+  if (existing && !existing->is_table()) throw SceneError(source + ": " + in_quotes(section) + " is not a section");
+  if (!existing) existing = &document.insert_or_assign(section, toml::table{}).first->second;
+  toml::node& node = *value.get("v");
+  const toml::source_region region = node.source();  // "--set ...", line 1, in messages
+  existing->as_table()->insert_or_assign(toml::key(key, region), std::move(node));
+}
+
+}  // namespace
+
+SceneDescription parse_scene(std::string_view text, const std::string& source, const std::vector<std::string>& overrides) {
+  toml::table document = parse_toml(text, source);
+  for (const std::string& o : overrides) apply_override(document, o);
+  for (auto&& [key, node] : document) {
+    const bool known = std::find(kSections.begin(), kSections.end(), key.str()) != kSections.end();
+    if (!known || !node.is_table())
+      throw SceneError(at(source, key.source()) + ": " + in_quotes(key.str()) + " is not a section; sections: " +
+                       joined(kSections));
+  }
+  const auto section = [&](const char* name) { return Section(document[name].as_table(), source, name); };
+
+  SceneDescription scene;
+  PourSettings& p = scene.pour;
+  Section meta = section("scene");
+  scene.name = meta.text("name", std::filesystem::path(source).stem().string());
+  scene.description = meta.text("description", "");
+  meta.finish();
+
+  Section grains = section("grains");
+  p.cultivar = grains.choice("cultivar", p.cultivar, grains::cultivar_names());
+  p.count = static_cast<int>(grains.integer_in("count", p.count, 1, 100000));
+  p.variants = static_cast<int>(grains.integer_in("variants", p.variants, 1, 1000));
+  p.seed = static_cast<std::uint64_t>(grains.integer_in("seed", static_cast<long>(p.seed), 0, INT64_MAX));
+  const std::string body = grains.choice("body", "rigid", {"rigid", "soft"});
+  p.body = body == "soft" ? xpbd::BodyKind::kSoft : xpbd::BodyKind::kRigid;
+  p.young = grains.number_in("young_pa", p.young, 1e3, 1e9);
+  p.poisson = grains.number("poisson", p.poisson, [](double v) { return v > -1.0 && v < 0.5; }, "a number in (-1, 0.5)");
+  p.soak_minutes = grains.number("soak_minutes", p.soak_minutes, [](double v) { return v > 0.0 && v <= 1e5; },
+                                 "a number in (0, 1e5]");
+  p.soak_temperature = grains.number_in("soak_temperature_c", p.soak_temperature, 0.0, 100.0);
+  grains.finish();
+
+  Section solver = section("solver");
+  p.fps = solver.number("fps", p.fps, [](double v) { return v > 0.0 && v <= 1000.0; }, "a number in (0, 1000]");
+  p.frames = static_cast<int>(solver.integer_in("frames", p.frames, 1, 100000));
+  p.substeps = static_cast<int>(solver.integer_in("substeps", p.substeps, 0, 10000));
+  p.iterations = static_cast<int>(solver.integer_in("iterations", p.iterations, 1, 1000));
+  p.vertex_block_descent = solver.choice("method", "xpbd", {"xpbd", "vbd"}) == "vbd";
+  solver.require(!p.vertex_block_descent || p.body == xpbd::BodyKind::kSoft, "method",
+                 "'xpbd' for rigid grains (vertex block descent moves soft grains' particles)");
+  solver.finish();
+
+  Section container = section("container");
+  p.container = container.choice("kind", "chawan", {"chawan", "plate"}) == "plate" ? Container::kPlate
+                                                                                   : Container::kChawan;
+  p.grid_spacing = container.number_in("grid_spacing_m", p.grid_spacing, 2e-4, 1e-2);
+  container.finish();
+
+  Section emitter = section("emitter");
+  emitter.choice("kind", "spout", {"spout"});
+  p.spout_height = emitter.number_in("height_m", p.spout_height, 0.0, 10.0);
+  p.pour_seconds = emitter.number_in("seconds", p.pour_seconds, 0.0, 1e4);
+  emitter.finish();
+
+  Section effects = section("effects");
+  const bool friction = effects.flag("friction", true);
+  p.static_friction = effects.number_in("static_friction", p.static_friction, 0.0, 10.0);
+  p.dynamic_friction = effects.number_in("dynamic_friction", p.dynamic_friction, 0.0, 10.0);
+  if (p.dynamic_friction > p.static_friction) {
+    if (effects.has("dynamic_friction"))
+      effects.require(false, "dynamic_friction", "at most static_friction (" + number_text(p.static_friction) + ")");
+    effects.require(false, "static_friction", "at least dynamic_friction (" + number_text(p.dynamic_friction) + ")");
+  }
+  if (!friction) p.static_friction = p.dynamic_friction = 0.0;
+  p.cohesion = effects.flag("cohesion", p.cohesion);
+  p.sleeping = effects.flag("sleeping", p.sleeping);
+  p.render_meshes = effects.flag("render_meshes", p.render_meshes);
+  effects.finish();
+  return scene;
+}
+
+SceneDescription read_scene_file(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError(path.string() + ": cannot be read");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_scene(text.str(), path.string(), overrides);
+}
+
+}  // namespace rice::experiments

@@ -1,0 +1,53 @@
+// Scene files (issue 13): a scene described in one TOML file (experiments/scenes/*.toml) and
+// run by `rice run SCENE.toml --out DIR` (scene_run.hpp), without writing C++. Read strictly, before any work:
+// a syntax error, a section or key that does not exist, a value of the wrong type or out of
+// range stops the run with a SceneError whose message names the file, the line and the key
+// and says what was expected.
+//
+// Sections and keys (all optional; the defaults are those of `rice pour`):
+//
+//   [scene]      name (text; default: the file's stem), description (text)
+//   [grains]     cultivar, count, variants, seed, body ("rigid" | "soft"), young_pa, poisson,
+//                soak_minutes, soak_temperature_c
+//   [solver]     fps, frames, substeps (0: by body kind), iterations,
+//                method ("xpbd" | "vbd"; vbd needs soft grains)
+//   [container]  kind ("chawan" | "plate"), grid_spacing_m (the chawan's distance grid)
+//   [emitter]    kind ("spout"), height_m (above the chawan's rim or the plate), seconds
+//                (over which the grains leave it)
+//   [effects]    friction (bool), static_friction, dynamic_friction, cohesion, sleeping,
+//                render_meshes
+//
+// Overrides (`--set section.key=value`, a TOML value) replace or add a key before reading, so
+// a short variant of a scene is the same file with fewer grains or frames.
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "experiments/pour_scene.hpp"
+
+namespace rice::experiments {
+
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct SceneDescription {
+  std::string name;
+  std::string description;
+  /// What runs: for now every scene is grains poured from a spout into a container.
+  PourSettings pour;
+};
+
+/// Reads scene text; `source` names it in messages (a file path). `overrides` are
+/// "section.key=value" strings applied before reading.
+SceneDescription parse_scene(std::string_view text, const std::string& source, const std::vector<std::string>& overrides = {});
+
+/// Reads a scene file (SceneError when it cannot be read).
+SceneDescription read_scene_file(const std::filesystem::path& path, const std::vector<std::string>& overrides = {});
+
+}  // namespace rice::experiments

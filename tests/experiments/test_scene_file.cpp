@@ -1,0 +1,135 @@
+// Scene files (experiments/scene_file.hpp): every shipped scene parses; an empty file gives
+// `rice pour`'s defaults; each kind of mistake stops the read with a message naming the file,
+// the line and the key; `--set` overrides; `rice run` on a short variant writes the run with a
+// copy of its scene, and a bad scene writes nothing.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "experiments/scene_file.hpp"
+#include "experiments/scene_run.hpp"
+
+#ifndef RICE_SCENES_DIR
+#error "RICE_SCENES_DIR must name experiments/scenes (set by tests/CMakeLists.txt)"
+#endif
+
+namespace rice::experiments {
+namespace {
+
+TEST(SceneFile, EveryShippedSceneParses) {
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(RICE_SCENES_DIR)) {
+    if (entry.path().extension() != ".toml") continue;
+    ++count;
+    SCOPED_TRACE(entry.path().string());
+    const SceneDescription scene = read_scene_file(entry.path());
+    EXPECT_EQ(scene.name, entry.path().stem().string());
+    EXPECT_FALSE(scene.description.empty());
+    EXPECT_NO_THROW(validate(scene.pour));
+  }
+  EXPECT_GE(count, 2);
+}
+
+TEST(SceneFile, AnEmptyFileIsThePourWithItsDefaults) {
+  const SceneDescription scene = parse_scene("", "dir/empty.toml");
+  EXPECT_EQ(scene.name, "empty");
+  const PourSettings defaults;
+  EXPECT_EQ(scene.pour.count, defaults.count);
+  EXPECT_EQ(scene.pour.frames, defaults.frames);
+  EXPECT_EQ(scene.pour.container, defaults.container);
+  EXPECT_EQ(scene.pour.static_friction, defaults.static_friction);
+  EXPECT_EQ(scene.pour.cohesion, defaults.cohesion);
+}
+
+TEST(SceneFile, KeysSetTheSettings) {
+  const SceneDescription scene = parse_scene(R"([grains]
+count = 12
+body = "soft"
+young_pa = 2e5
+[solver]
+method = "vbd"
+frames = 7
+[container]
+kind = "plate"
+[effects]
+friction = false
+cohesion = false
+)", "s.toml");
+  EXPECT_EQ(scene.pour.count, 12);
+  EXPECT_EQ(scene.pour.body, xpbd::BodyKind::kSoft);
+  EXPECT_EQ(scene.pour.young, 2e5);
+  EXPECT_TRUE(scene.pour.vertex_block_descent);
+  EXPECT_EQ(scene.pour.frames, 7);
+  EXPECT_EQ(scene.pour.container, Container::kPlate);
+  EXPECT_EQ(scene.pour.static_friction, 0.0);
+  EXPECT_EQ(scene.pour.dynamic_friction, 0.0);
+  EXPECT_FALSE(scene.pour.cohesion);
+}
+
+/// The message of reading `text` as "bad.toml" (empty when it is read).
+std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
+  try {
+    parse_scene(text, "bad.toml", overrides);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SceneFile, MistakesNameTheFileTheLineAndTheKey) {
+  struct Case {
+    const char* text;
+    const char* message;  ///< the start of the expected message
+  };
+  const Case cases[] = {
+      {"[grains]\ncount = 10\ncont = 3\n", "bad.toml:3: [grains] has no key 'cont'"},
+      {"[grain]\ncount = 10\n", "bad.toml:1: 'grain' is not a section"},
+      {"count = 10\n", "bad.toml:1: 'count' is not a section"},
+      {"[grains]\ncount = \"many\"\n", "bad.toml:2: [grains] count = \"many\": expected an integer in [1, 100000]"},
+      {"[grains]\n\ncount = 0\n", "bad.toml:3: [grains] count = 0: expected an integer in [1, 100000]"},
+      {"[grains]\ncount = 2.5\n", "bad.toml:2: [grains] count = 2.5: expected an integer"},
+      {"[grains]\npoisson = 0.5\n", "bad.toml:2: [grains] poisson = 0.5: expected a number in (-1, 0.5)"},
+      {"[grains]\ncultivar = \"basmati\"\n", "bad.toml:2: [grains] cultivar = \"basmati\": expected one of 'japonica'"},
+      {"[solver]\nfps = nan\n", "bad.toml:2: [solver] fps = nan: expected a number in (0, 1000]"},
+      {"[solver]\nmethod = \"vbd\"\n", "bad.toml:2: [solver] method = \"vbd\": expected 'xpbd' for rigid grains"},
+      {"[effects]\nstatic_friction = 0.3\ndynamic_friction = 0.4\n",
+       "bad.toml:3: [effects] dynamic_friction = 0.4: expected at most static_friction"},
+      {"[effects]\nstatic_friction = 0.3\n", "bad.toml:2: [effects] static_friction = 0.3: expected at least dynamic_friction"},
+      {"[effects]\ncohesion = 1\n", "bad.toml:2: [effects] cohesion = 1: expected true or false"},
+      {"[emitter]\nkind = \"stream\"\n", "bad.toml:2: [emitter] kind = \"stream\": expected one of 'spout'"},
+      {"[grains]\ncount = = 3\n", "bad.toml:2: "},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.text);
+    const std::string message = error_of(c.text);
+    EXPECT_TRUE(message.starts_with(c.message)) << message;
+  }
+}
+
+TEST(SceneFile, OverridesReplaceOrAddKeysAndAreCheckedTheSameWay) {
+  const SceneDescription scene = parse_scene("[grains]\ncount = 800\n", "s.toml", {"grains.count=40", "solver.frames=5"});
+  EXPECT_EQ(scene.pour.count, 40);
+  EXPECT_EQ(scene.pour.frames, 5);
+  EXPECT_TRUE(error_of("", {"grains.count=-1"}).starts_with("--set grains.count=-1:1: [grains] count = -1: expected"));
+  EXPECT_TRUE(error_of("", {"grains.colour=2"}).starts_with("--set grains.colour=2:1: [grains] has no key 'colour'"));
+  EXPECT_TRUE(error_of("", {"count=40"}).starts_with("--set count=40: expected section.key=value"));
+  EXPECT_TRUE(error_of("", {"grain.count=40"}).starts_with("--set grain.count=40: there is no section 'grain'"));
+}
+
+TEST(SceneFile, RunWritesTheRunWithItsSceneAndABadSceneWritesNothing) {
+  const std::filesystem::path out = std::filesystem::path(RICE_TEST_SCRATCH) / "scene-run";
+  std::filesystem::remove_all(out);
+  const std::filesystem::path chawan = std::filesystem::path(RICE_SCENES_DIR) / "chawan.toml";
+  EXPECT_THROW(run_scene_command(chawan, {"grains.count=0"}, out), SceneError);
+  EXPECT_FALSE(std::filesystem::exists(out));
+  run_scene_command(chawan, {"grains.count=20", "grains.variants=2", "solver.frames=3"}, out);
+  for (const char* file : {"scene.toml", "stats.csv", "run_info.txt", "grains.csv"})
+    EXPECT_TRUE(std::filesystem::exists(out / file)) << file;
+  // The copy reads back as the scene it ran.
+  const SceneDescription copy = read_scene_file(out / "scene.toml");
+  EXPECT_EQ(copy.pour.count, 800);  // the file's own value; the overrides are listed below it
+}
+
+}  // namespace
+}  // namespace rice::experiments
