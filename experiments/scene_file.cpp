@@ -20,7 +20,8 @@ std::string at(const std::string& source, const toml::source_region& region) {
   return (region.path ? std::string(*region.path) : source) + ":" + std::to_string(region.begin.line);
 }
 
-/// The shortest text that reads back as `value`.
+/// The shortest text that reads back as `value` (output.hpp's cell(), which this reader does
+/// not link: it stands alone for the fuzz targets).
 std::string number_text(double value) {
   char buffer[32];
   return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
