@@ -16,6 +16,7 @@
 
 #include "experiments/cdrf_study.hpp"
 #include "experiments/convergence_study.hpp"
+#include "experiments/figure10.hpp"
 #include "experiments/figure13.hpp"
 #include "experiments/grain_figures.hpp"
 #include "experiments/grain_library.hpp"
@@ -138,7 +139,10 @@ struct CommandLine::Commands {
   // Edits of the chosen cultivar, applied after it is looked up by name.
   std::vector<std::pair<CLI::Option*, std::function<double&(grains::Cultivar&)>>> cultivar_edits;
 
-  CLI::App *figure8_cmd = nullptr, *figure9_cmd = nullptr, *figure11_cmd = nullptr, *figure13_cmd = nullptr;
+  CLI::App *figure8_cmd = nullptr, *figure9_cmd = nullptr, *figure10_cmd = nullptr, *figure11_cmd = nullptr,
+           *figure13_cmd = nullptr;
+  Figure10Settings figure10;
+  std::string figure10_out = "out/figure10";
   Figure13Settings figure13;
   std::string figure13_out = "out/figure13";
   WaterAbsorptionFigureSettings absorption;
@@ -199,6 +203,8 @@ struct CommandLine::Commands {
         ->check(number_in(0, 1e4))->capture_default_str();
     pour_cmd->add_option("--spout-height", pour.spout_height, "spout above the chawan's rim or the plate [m]")->check(number_in(0, 10))
         ->capture_default_str();
+    pour_cmd->add_option("--spout-radius", pour.spout_radius, "spout opening [m]; 0: the container's")
+        ->check(number_in(0, 1))->capture_default_str();
     pour_cmd->add_option("--fps", pour.fps, "frames per second")->check(number_in(0, 1000, Ends::kOpenLow))
         ->capture_default_str();
     pour_cmd->add_option("--substeps", pour.substeps, "substeps per frame; 0: 80 rigid, 480 soft")
@@ -528,6 +534,13 @@ struct CommandLine::Commands {
     figure9_cmd->add_option("--count", figure9_count, "grains per cultivar for the dimension statistics")
         ->check(number_in(2, 1000))->capture_default_str();
 
+    figure10_cmd = figure->add_subcommand("10", "a clump of grains dropped on a plate after three soak times");
+    figure10_cmd->add_option("--out", figure10_out, "output folder")->capture_default_str();
+    figure10_cmd->add_option("--scene", figure10.scene, "the drop scene")->capture_default_str();
+    figure10_cmd->add_option("--soak-minutes", figure10.soak_minutes, "soak times at the scene's temperature")
+        ->check(number_in(0, 1e5, Ends::kOpenLow))->capture_default_str();
+    figure10_cmd->add_option("--set", figure10.overrides, "section.key=value for every run (repeatable)");
+
     figure13_cmd = figure->add_subcommand("13", "japonica grains soaked at 5 °C for five times, rendered with the CDRF");
     figure13_cmd->add_option("--out", figure13_out, "output folder")->capture_default_str();
     figure13_cmd->add_option("--soak-minutes", figure13.soak_minutes, "soak times, one grain each")
@@ -591,6 +604,7 @@ void CommandLine::validate() const {
   if (*c.contact_cmd) experiments::validate(c.contact_settings());
   if (*c.grains_cmd) experiments::validate(c.grain_library_settings());
   if (*c.figure11_cmd) experiments::validate(c.absorption);
+  if (*c.figure10_cmd) experiments::validate(c.figure10);
   if (*c.figure13_cmd) experiments::validate(c.figure13);
   if (*c.pour_cmd) experiments::validate(c.pour_settings());
   if (*c.run_cmd) experiments::validate(read_scene_file(c.run_scene, c.run_overrides).pour);
@@ -613,6 +627,7 @@ void CommandLine::run() const {
   if (*c.figure8_cmd) grain_sizes_figure_command(c.figure_seed, c.figure8_out);
   if (*c.figure9_cmd) cultivars_figure_command(c.figure_seed, c.figure9_count, c.figure9_out);
   if (*c.figure11_cmd) water_absorption_figure_command(c.absorption, c.absorption_out);
+  if (*c.figure10_cmd) figure10_command(c.figure10, c.figure10_out);
   if (*c.figure13_cmd) figure13_command(c.figure13, c.figure13_out);
   if (*c.pour_cmd) pour_command(c.pour_settings(), c.pour_out);
   if (*c.run_cmd) run_scene_command(c.run_scene, c.run_overrides, c.run_out);

@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -15,6 +17,7 @@
 #include "experiments/interrupt.hpp"
 #include "experiments/item_loop.hpp"
 #include "experiments/output.hpp"
+#include "experiments/pile_measures.hpp"
 #include "grains/absorption_table.hpp"
 #include "grains/chawan.hpp"
 #include "grains/collision_spheres.hpp"
@@ -135,6 +138,7 @@ void validate(const PourSettings& s) {
   require(s.grid_spacing >= 2e-4 && s.grid_spacing <= 1e-2, "--grid-spacing must be in [2e-4, 1e-2] m");
   require(s.pour_seconds >= 0.0 && s.pour_seconds <= 1e4, "--pour-seconds must be in [0, 1e4]");
   require(s.spout_height >= 0.0 && s.spout_height <= 10.0, "--spout-height must be in [0, 10] m");
+  require(s.spout_radius >= 0.0 && s.spout_radius <= 1.0, "--spout-radius must be in [0, 1] m (0: the container's)");
 }
 
 int substeps_per_frame(const PourSettings& settings) {
@@ -166,15 +170,16 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   longest *= recipe.cultivar.swell_max;
   const double inner_radius = bowl_shape.rim_radius - bowl_shape.wall_thickness;
   int per_layer = 0;
-  const std::vector<Vec3> drops =
-      plate ? spout_positions(settings.count, 1.05 * longest, 1.1 * longest, settings.spout_height, &per_layer)
-            : spout_positions(settings.count, 1.05 * longest, 0.6 * inner_radius - longest,
-                              bowl_shape.height + settings.spout_height, &per_layer);
+  const double spout_radius = settings.spout_radius > 0.0 ? settings.spout_radius
+                              : plate                      ? 1.1 * longest
+                                                           : 0.6 * inner_radius - longest;
+  const std::vector<Vec3> drops = spout_positions(settings.count, 1.05 * longest, spout_radius,
+                                                  settings.spout_height + (plate ? 0.0 : bowl_shape.height), &per_layer);
   const int layers = (settings.count + per_layer - 1) / per_layer;
   // A layer must have fallen clear of the spout, 1.05 grain lengths from rest, before the next
   // leaves: else grains are released inside each other.
   const double clear_seconds = std::sqrt(2.0 * 1.05 * longest / 9.81);
-  if (layers > 1 && settings.pour_seconds / layers < clear_seconds)
+  if (layers > 1 && settings.pour_seconds > 0.0 && settings.pour_seconds / layers < clear_seconds)
     throw std::invalid_argument("pour: " + std::to_string(layers) + " layers of " + std::to_string(per_layer) +
                                 " grains leave the spout " + fixed(1e3 * settings.pour_seconds / layers, 1) +
                                 " ms apart, sooner than one falls clear of the next (" +
@@ -291,8 +296,10 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   const auto simulation_start = std::chrono::steady_clock::now();
   for (int frame = 1; frame <= settings.frames; ++frame) {
     const auto frame_start = std::chrono::steady_clock::now();
-    const int due = std::min(settings.count,
-                             per_layer * (1 + static_cast<int>(std::floor(solver.time() / settings.pour_seconds * layers))));
+    const int due = settings.pour_seconds > 0.0
+                        ? std::min(settings.count, per_layer * (1 + static_cast<int>(std::floor(
+                                                                        solver.time() / settings.pour_seconds * layers))))
+                        : settings.count;  // a clump: every layer at once
     if (released < due) {
       // Layers due in the same frame (long frames) leave stacked a cell apart.
       const double lift = spout_lift(released);
@@ -353,6 +360,8 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   result.awake = static_cast<int>(
       std::count_if(model.bodies.begin(), model.bodies.end(), [](const xpbd::Body& b) { return !b.asleep; }));
   result.penetration = xpbd::deepest_penetration(model, solver.time());
+  result.footprint_radius = footprint_radius(centres);
+  result.clusters = count_clusters(model, 1e-4);
   // pile.png: the grains from the top (left) and the side (right).
   const std::string top_and_side = R"(set terminal pngcairo size 1200,560
 set output 'pile.png'
@@ -362,8 +371,26 @@ set size ratio -1
 set xlabel 'x [m]'
 set ylabel 'y [m]'
 )";
+  std::optional<HeapProfile> fitted;
   if (plate) {
-    const HeapProfile heap = heap_profile(centres, 0.5 * longest);
+    try {
+      fitted = heap_profile(centres, 0.5 * longest);
+    } catch (const std::invalid_argument&) {
+      // Grains scattered one deep (a dry clump dropped): no flank to fit.
+    }
+  }
+  if (plate && !fitted) {
+    result.angle_of_repose_degrees = result.heap_height = std::numeric_limits<double>::quiet_NaN();
+    render_plot(folder, "pile", top_and_side + R"(set title 'The grains from the top (centres): scattered, no heap'
+plot 'final_centres.csv' using 2:3 with points pt 7 ps 0.5 notitle
+set xlabel 'x [m]'
+set ylabel 'z [m]'
+set title 'From the side'
+plot 'final_centres.csv' using 2:4 with points pt 7 ps 0.5 notitle
+unset multiplot
+)");
+  } else if (plate) {
+    const HeapProfile& heap = *fitted;
     result.angle_of_repose_degrees = heap.angle_degrees;
     result.heap_height = heap.apex_height;
     CsvTable rings({"radius_m", "height_m", "on_flank"});
@@ -406,16 +433,18 @@ unset multiplot
             << " grains, " << settings.frames << " frames in " << simulation_seconds << " s (broad phase "
             << t.broad_phase << " s, narrow phase " << t.narrow_phase << " s, solves " << t.solve() << " s, sleeping "
             << t.sleeping << " s); set-up " << setup_seconds << " s\n";
-  if (plate)
+  if (fitted)
     std::cout << "rice pour: angle of repose " << fixed(result.angle_of_repose_degrees, 1) << " degrees, heap "
               << fixed(1e3 * result.heap_height, 1) << " mm high\n";
   write_file_atomically(
       folder / "run_info.txt",
       run_info({{"command", "pour"},
                 {"container", plate ? "plate" : "chawan"},
-                {"angle_of_repose_deg", plate ? cell(result.angle_of_repose_degrees) : "n/a"},
-                {"heap_height_m", plate ? cell(result.heap_height) : "n/a"},
+                {"angle_of_repose_deg", fitted ? cell(result.angle_of_repose_degrees) : "n/a"},
+                {"heap_height_m", fitted ? cell(result.heap_height) : "n/a"},
                 {"awake_at_end", cell(result.awake)},
+                {"footprint_radius_m", cell(result.footprint_radius)},
+                {"clusters", cell(result.clusters)},
                 {"penetration_between_grains_at_end_m", cell(result.penetration.between_bodies)},
                 {"penetration_into_container_at_end_m", cell(result.penetration.into_colliders)},
                 {"cultivar", settings.cultivar},
@@ -425,6 +454,7 @@ unset multiplot
                 {"frames", cell(settings.frames)},
                 {"pour_seconds", cell(settings.pour_seconds)},
                 {"spout_height_m", cell(settings.spout_height)},
+                {"spout_radius_m", cell(spout_radius)},
                 {"grains_per_layer", cell(per_layer)},
                 {"fps", cell(settings.fps)},
                 {"substeps", cell(substeps_per_frame(settings))},

@@ -38,6 +38,10 @@ struct PourSettings {
   /// layer leaves. The chawan's spout is 0.6 of its inner radius wide, the plate's one grain.
   double pour_seconds = 1.5;
   double spout_height = 0.02;  ///< [m]
+  /// Radius of the spout's opening [m]; 0: the container's (plate: 1.1 grain lengths, a narrow
+  /// stream; chawan: 0.6 of the bowl's inner radius less a grain length). With pour_seconds = 0
+  /// every layer leaves at once, stacked a cell apart: a clump dropped whole.
+  double spout_radius = 0.0;
   double fps = 30.0;
   /// 0: 80 for rigid grains, which keeps the resting pile's penetrations under 5% of a grain's
   /// thickness (measured: 20 left 29%, 40 left 6.5%), and 480 for soft ones at 30 fps, under
@@ -76,6 +80,10 @@ struct PourResult {
   xpbd::Penetration penetration;  ///< the deepest overlaps at the end
   /// Plate only: the heap's angle of repose [°] and its apex above the lowest centre [m].
   double angle_of_repose_degrees = 0.0, heap_height = 0.0;
+  /// The pile from above (pile_measures.hpp): the radius holding 90% of the grains' centres
+  /// [m], and the groups of grains that touch (within 0.1 mm).
+  double footprint_radius = 0.0;
+  int clusters = 0;
 };
 
 /// Runs the scene and writes its files into `folder`.

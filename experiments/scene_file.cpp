@@ -205,6 +205,7 @@ SceneDescription parse_scene(std::string_view text, const std::string& source, c
   Section emitter = section("emitter");
   emitter.choice("kind", "spout", {"spout"});
   p.spout_height = emitter.number_in("height_m", p.spout_height, 0.0, 10.0);
+  p.spout_radius = emitter.number_in("radius_m", p.spout_radius, 0.0, 1.0);
   p.pour_seconds = emitter.number_in("seconds", p.pour_seconds, 0.0, 1e4);
   emitter.finish();
 

@@ -12,8 +12,9 @@
 //   [solver]     fps, frames, substeps (0: by body kind), iterations,
 //                method ("xpbd" | "vbd"; vbd needs soft grains)
 //   [container]  kind ("chawan" | "plate"), grid_spacing_m (the chawan's distance grid)
-//   [emitter]    kind ("spout"), height_m (above the chawan's rim or the plate), seconds
-//                (over which the grains leave it)
+//   [emitter]    kind ("spout"), height_m (above the chawan's rim or the plate), radius_m
+//                (its opening; 0: the container's), seconds (over which the grains leave it;
+//                0: all at once, a clump)
 //   [effects]    friction (bool), static_friction, dynamic_friction, cohesion, sleeping,
 //                render_meshes
 //

@@ -6,12 +6,11 @@
 #include <sstream>
 
 #include "experiments/output.hpp"
-#include "experiments/pour_scene.hpp"
 #include "experiments/scene_file.hpp"
 
 namespace rice::experiments {
 
-void run_scene_command(const std::filesystem::path& scene_file, const std::vector<std::string>& overrides,
+PourResult run_scene_command(const std::filesystem::path& scene_file, const std::vector<std::string>& overrides,
                        const std::filesystem::path& folder) {
   std::ifstream in(scene_file, std::ios::binary);
   if (!in) throw SceneError(scene_file.string() + ": cannot be read");
@@ -27,7 +26,7 @@ void run_scene_command(const std::filesystem::path& scene_file, const std::vecto
   }
   write_file_atomically(folder / "scene.toml", copy);
   std::printf("scene %s: %s\n", scene.name.c_str(), scene.description.c_str());
-  pour_command(scene.pour, folder);
+  return pour_command(scene.pour, folder);
 }
 
 }  // namespace rice::experiments

@@ -5,10 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
+#include "experiments/figure10.hpp"
+#include "experiments/pile_measures.hpp"
 #include "experiments/scene_file.hpp"
 #include "experiments/scene_run.hpp"
+#include "tests/xpbd/grain_fixtures.hpp"
 
 #ifndef RICE_SCENES_DIR
 #error "RICE_SCENES_DIR must name experiments/scenes (set by tests/CMakeLists.txt)"
@@ -129,6 +133,45 @@ TEST(SceneFile, RunWritesTheRunWithItsSceneAndABadSceneWritesNothing) {
   // The copy reads back as the scene it ran.
   const SceneDescription copy = read_scene_file(out / "scene.toml");
   EXPECT_EQ(copy.pour.count, 800);  // the file's own value; the overrides are listed below it
+}
+
+TEST(PileMeasures, FootprintRadiusHoldsTheFractionOfCentresAboutTheirMean) {
+  // Ten centres on a circle of 2 cm about (1, 1), one at its middle, heights anything.
+  std::vector<xpbd::Vec3> centres{xpbd::Vec3(1.0, 1.0, 0.3)};
+  for (int k = 0; k < 10; ++k) {
+    const double t = 2.0 * M_PI * k / 10.0;
+    centres.emplace_back(1.0 + 0.02 * std::cos(t), 1.0 + 0.02 * std::sin(t), 0.01 * k);
+  }
+  EXPECT_NEAR(footprint_radius(centres, 0.9), 0.02, 1e-12);
+  EXPECT_NEAR(footprint_radius(centres, 1.0 / 11.0), 0.0, 1e-12);  // the middle one alone
+  EXPECT_EQ(footprint_radius({}), 0.0);
+}
+
+TEST(PileMeasures, ClustersAreTheGroupsOfGrainsWhoseSpheresTouch) {
+  // Three grain-sized bodies in a row 50 µm apart and a fourth far away: two groups at a gap
+  // of 0.1 mm, four at 10 µm.
+  xpbd::Model model;
+  for (int g = 0; g < 3; ++g)
+    xpbd::testing::add_grain(model, xpbd::BodyKind::kRigid, xpbd::Vec3(0.0, g * (xpbd::testing::kGrainWidth + 5e-5), 0.0));
+  xpbd::testing::add_grain(model, xpbd::BodyKind::kSoft, xpbd::Vec3(0.1, 0.0, 0.0));
+  EXPECT_EQ(count_clusters(model, 1e-4), 2);
+  EXPECT_EQ(count_clusters(model, 1e-5), 4);
+}
+
+TEST(Figure10, RunsTheDropSceneAtEachSoakTimeAndTabulatesThePiles) {
+  const std::filesystem::path out = std::filesystem::path(RICE_TEST_SCRATCH) / "figure10";
+  std::filesystem::remove_all(out);
+  Figure10Settings s;
+  s.scene = std::filesystem::path(RICE_SCENES_DIR) / "drop.toml";
+  s.soak_minutes = {15.0, 240.0};
+  s.overrides = {"grains.count=12", "grains.variants=2", "solver.frames=4"};
+  figure10_command(s, out);
+  std::ifstream table(out / "figure10.csv");
+  std::string line;
+  int rows = 0;
+  while (std::getline(table, line)) ++rows;
+  EXPECT_EQ(rows, 3);  // header and one row per soak time
+  EXPECT_TRUE(std::filesystem::exists(out / "soak_240min" / "scene.toml"));
 }
 
 }  // namespace

@@ -99,7 +99,8 @@ void read_scene(std::string_view bytes) {
   expect(p.fps > 0.0 && p.fps <= 1000.0 && p.young >= 1e3 && p.young <= 1e9 && p.poisson > -1.0 && p.poisson < 0.5 &&
              p.soak_minutes > 0.0 && p.soak_minutes <= 1e5 && p.soak_temperature >= 0.0 &&
              p.soak_temperature <= 100.0 && p.grid_spacing >= 2e-4 && p.grid_spacing <= 1e-2 &&
-             p.spout_height >= 0.0 && p.spout_height <= 10.0 && p.pour_seconds >= 0.0 && p.pour_seconds <= 1e4,
+             p.spout_height >= 0.0 && p.spout_height <= 10.0 && p.spout_radius >= 0.0 && p.spout_radius <= 1.0 &&
+             p.pour_seconds >= 0.0 && p.pour_seconds <= 1e4,
          "a number outside the documented ranges");
   expect(p.dynamic_friction >= 0.0 && p.dynamic_friction <= p.static_friction && p.static_friction <= 10.0,
          "friction coefficients outside 0 <= mu_k <= mu_s <= 10");

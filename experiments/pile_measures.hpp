@@ -1,0 +1,20 @@
+// What a pile of grains looks like from above, for the drop scenes (paper Fig. 10: wetter
+// grains clump and stay heaped, drier ones scatter): the radius of its footprint and the
+// number of groups of grains that touch.
+#pragma once
+
+#include <vector>
+
+#include "xpbd/model.hpp"
+
+namespace rice::experiments {
+
+/// The radius about the mean of `centres` (in the horizontal plane) within which `fraction`
+/// of them lie [m]; 0 for no centres.
+double footprint_radius(const std::vector<xpbd::Vec3>& centres, double fraction = 0.9);
+
+/// The number of groups of bodies that touch: two bodies whose collision spheres come within
+/// `gap` [m] of each other are in one group, and so are their groups (union–find).
+int count_clusters(const xpbd::Model& model, double gap);
+
+}  // namespace rice::experiments
