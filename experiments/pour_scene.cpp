@@ -139,6 +139,10 @@ void validate(const PourSettings& s) {
   require(s.pour_seconds >= 0.0 && s.pour_seconds <= 1e4, "--pour-seconds must be in [0, 1e4]");
   require(s.spout_height >= 0.0 && s.spout_height <= 10.0, "--spout-height must be in [0, 10] m");
   require(s.spout_radius >= 0.0 && s.spout_radius <= 1.0, "--spout-radius must be in [0, 1] m (0: the container's)");
+  for (size_t c = 0; c < s.colliders.size(); ++c) {
+    require(s.colliders[c].shape != xpbd::ColliderShape::kDistanceGrid, "scene colliders are analytic shapes");
+    xpbd::validate(s.colliders[c], static_cast<int>(c) + 1);  // 0 is the container
+  }
 }
 
 int substeps_per_frame(const PourSettings& settings) {
@@ -281,6 +285,7 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   container.static_friction = settings.static_friction;
   container.dynamic_friction = settings.dynamic_friction;
   model.colliders.push_back(container);
+  model.colliders.insert(model.colliders.end(), settings.colliders.begin(), settings.colliders.end());
   const double setup_seconds = seconds_since(start);
 
   xpbd::SolverSettings solver_settings;
@@ -455,6 +460,7 @@ unset multiplot
                 {"pour_seconds", cell(settings.pour_seconds)},
                 {"spout_height_m", cell(settings.spout_height)},
                 {"spout_radius_m", cell(spout_radius)},
+                {"more_colliders", cell(static_cast<long>(settings.colliders.size()))},
                 {"grains_per_layer", cell(per_layer)},
                 {"fps", cell(settings.fps)},
                 {"substeps", cell(substeps_per_frame(settings))},

@@ -16,8 +16,10 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "xpbd/body.hpp"
+#include "xpbd/collider.hpp"
 #include "xpbd/penetration.hpp"
 
 namespace rice::experiments {
@@ -66,6 +68,9 @@ struct PourSettings {
   bool render_meshes = false;  ///< also write each frame's deformed render meshes (large)
   double grid_spacing = 1e-3;  ///< chawan distance grid [m]
   std::uint64_t seed = 1;
+  /// More colliders beside the container (scene files): planes, spheres, boxes and capsules,
+  /// each with its keyframed motion, so a hand or a mould can press and withdraw.
+  std::vector<xpbd::Collider> colliders;
 };
 
 /// Throws std::invalid_argument naming the setting and its range.

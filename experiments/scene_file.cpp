@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <fstream>
 #include <functional>
+#include <numbers>
 #include <sstream>
 
 #include "grains/cultivar.hpp"
@@ -75,6 +76,21 @@ class Section {
       fail(*node, key, "an integer in [" + std::to_string(low) + ", " + std::to_string(high) + "]");
     return static_cast<long>(*value);
   }
+  /// Three numbers [x, y, z], each within ±bound.
+  xpbd::Vec3 vector3(const std::string& key, const xpbd::Vec3& fallback, double bound) {
+    const toml::node* node = find(key);
+    if (!node) return fallback;
+    const toml::array* array = node->as_array();
+    xpbd::Vec3 v = xpbd::Vec3::Zero();
+    bool ok = array && array->size() == 3;
+    for (size_t k = 0; ok && k < 3; ++k) {
+      const std::optional<double> x = (*array)[k].is_number() ? (*array)[k].value<double>() : std::nullopt;
+      ok = x && std::isfinite(*x) && std::abs(*x) <= bound;
+      if (ok) v[static_cast<Eigen::Index>(k)] = *x;
+    }
+    if (!ok) fail(*node, key, "three numbers [x, y, z] within ±" + number_text(bound));
+    return v;
+  }
   bool flag(const std::string& key, bool fallback) {
     const toml::node* node = find(key);
     if (!node) return fallback;
@@ -97,6 +113,8 @@ class Section {
     return *node->value<std::string>();
   }
   bool has(const std::string& key) const { return table_ && table_->get(key); }
+  /// The key's node, counted as known (its reader checks it); null when absent.
+  const toml::node* claim(const std::string& key) { return find(key); }
   /// Throws when `ok` is false, naming the key (which must be in the file).
   void require(bool ok, const std::string& key, const std::string& expected) const {
     if (!ok) fail(*table_->get(key), key, expected);
@@ -152,16 +170,92 @@ void apply_override(toml::table& document, const std::string& assignment) {
   existing->as_table()->insert_or_assign(toml::key(key, region), std::move(node));
 }
 
+/// A keyframe: time_s, position_m, and the rotation as an axis and an angle in degrees.
+xpbd::ColliderKeyframe read_pose(Section& section, double time) {
+  xpbd::ColliderKeyframe key;
+  key.time = time;
+  key.translation = section.vector3("position_m", xpbd::Vec3::Zero(), 1e3);
+  const xpbd::Vec3 axis = section.vector3("axis", xpbd::Vec3::UnitZ(), 1e3);
+  const double angle = section.number_in("angle_deg", 0.0, -360.0, 360.0);
+  section.require(axis.norm() > 0.0 || angle == 0.0, "axis", "a direction, not [0, 0, 0]");
+  if (angle != 0.0) key.rotation = xpbd::Quat(Eigen::AngleAxisd(angle * std::numbers::pi / 180.0, axis.normalized()));
+  return key;
+}
+
+/// One [[colliders]] table: its shape and the sizes that shape has, its friction (by default
+/// the grains'), and where it is: one pose, or `keyframes`, a list of poses at increasing times.
+xpbd::Collider read_collider(const toml::table& table, const std::string& source, const std::string& name,
+                             const PourSettings& p) {
+  Section section(&table, source, name);
+  xpbd::Collider c;
+  const std::string shape = section.choice("shape", "", {"plane", "sphere", "box", "capsule"});
+  if (shape.empty())
+    throw SceneError(at(source, table.source()) + ": [" + name + "] needs a shape: 'plane', 'sphere', 'box' or 'capsule'");
+  const auto positive = [](double v) { return v > 0.0 && v <= 10.0; };
+  const auto size = [&](const std::string& key) {
+    const double v = section.number(key, 0.0, positive, "a number in (0, 10]");
+    if (v == 0.0) throw SceneError(at(source, table.source()) + ": [" + name + "] a " + shape + " needs " + key);
+    return v;
+  };
+  if (shape == "plane") c.shape = xpbd::ColliderShape::kHalfSpace;
+  if (shape == "sphere") {
+    c.shape = xpbd::ColliderShape::kSphere;
+    c.radius = size("radius_m");
+  }
+  if (shape == "box") {
+    c.shape = xpbd::ColliderShape::kBox;
+    c.half_extents = section.vector3("half_extents_m", xpbd::Vec3::Zero(), 10.0);
+    if (!(c.half_extents.minCoeff() > 0.0))
+      throw SceneError(at(source, table.source()) + ": [" + name + "] a box needs half_extents_m, three sizes > 0");
+  }
+  if (shape == "capsule") {
+    c.shape = xpbd::ColliderShape::kCapsule;
+    c.radius = size("radius_m");
+    c.half_length = size("half_length_m");
+  }
+  c.static_friction = section.number_in("static_friction", p.static_friction, 0.0, 10.0);
+  c.dynamic_friction = section.number_in("dynamic_friction", std::min(p.dynamic_friction, c.static_friction), 0.0, 10.0);
+  if (c.dynamic_friction > c.static_friction)
+    section.require(false, "dynamic_friction", "at most static_friction (" + number_text(c.static_friction) + ")");
+  const toml::node* keyframes = section.claim("keyframes");
+  if (!keyframes) {
+    c.motion = {read_pose(section, 0.0)};
+  } else {
+    const toml::array* list = keyframes->as_array();
+    if (!list || list->empty() || !list->is_array_of_tables())
+      throw SceneError(at(source, keyframes->source()) + ": [" + name + "] keyframes: expected a list of { time_s = ..., position_m = [...] }");
+    c.motion.clear();
+    for (size_t k = 0; k < list->size(); ++k) {
+      const toml::table& entry = *(*list)[k].as_table();
+      Section key(&entry, source, name + ".keyframes." + std::to_string(k + 1));
+      const double previous = c.motion.empty() ? -INFINITY : c.motion.back().time;
+      const double time = key.number("time_s", c.motion.empty() ? 0.0 : NAN,
+                                     [&](double t) { return t > previous && t <= 1e4; },
+                                     "a time in s after the previous keyframe's, at most 1e4");
+      if (std::isnan(time)) throw SceneError(at(source, entry.source()) + ": [" + name + ".keyframes." + std::to_string(k + 1) + "] needs time_s");
+      c.motion.push_back(read_pose(key, time));
+      key.finish();
+    }
+  }
+  section.finish();
+  return c;
+}
+
 }  // namespace
 
 SceneDescription parse_scene(std::string_view text, const std::string& source, const std::vector<std::string>& overrides) {
   toml::table document = parse_toml(text, source);
   for (const std::string& o : overrides) apply_override(document, o);
   for (auto&& [key, node] : document) {
+    if (key.str() == "colliders") {
+      if (!node.is_array_of_tables())
+        throw SceneError(at(source, key.source()) + ": 'colliders' must be a list of [[colliders]] tables");
+      continue;
+    }
     const bool known = std::find(kSections.begin(), kSections.end(), key.str()) != kSections.end();
     if (!known || !node.is_table())
       throw SceneError(at(source, key.source()) + ": " + in_quotes(key.str()) + " is not a section; sections: " +
-                       joined(kSections));
+                       joined(kSections) + ", [[colliders]]");
   }
   const auto section = [&](const char* name) { return Section(document[name].as_table(), source, name); };
 
@@ -223,6 +317,10 @@ SceneDescription parse_scene(std::string_view text, const std::string& source, c
   p.sleeping = effects.flag("sleeping", p.sleeping);
   p.render_meshes = effects.flag("render_meshes", p.render_meshes);
   effects.finish();
+
+  if (const toml::array* colliders = document["colliders"].as_array())
+    for (size_t c = 0; c < colliders->size(); ++c)
+      p.colliders.push_back(read_collider(*(*colliders)[c].as_table(), source, "colliders." + std::to_string(c + 1), p));
   return scene;
 }
 

@@ -17,6 +17,12 @@
 //                0: all at once, a clump)
 //   [effects]    friction (bool), static_friction, dynamic_friction, cohesion, sleeping,
 //                render_meshes
+//   [[colliders]] (any number, beside the container) shape ("plane" | "sphere" | "box" |
+//                "capsule") with its sizes (radius_m; half_extents_m = [x, y, z]; radius_m and
+//                half_length_m), static_friction and dynamic_friction (default: the grains'),
+//                and its pose: position_m = [x, y, z], axis = [x, y, z], angle_deg (a plane
+//                is the solid below its local z = 0), or keyframes = [{ time_s, position_m,
+//                axis, angle_deg }, ...] at increasing times, so a hand can press and withdraw
 //
 // Overrides (`--set section.key=value`, a TOML value) replace or add a key before reading, so
 // a short variant of a scene is the same file with fewer grains or frames.

@@ -111,6 +111,54 @@ TEST(SceneFile, MistakesNameTheFileTheLineAndTheKey) {
   }
 }
 
+TEST(SceneFile, CollidersHaveTheirShapesSizesAndKeyframes) {
+  const SceneDescription scene = parse_scene(R"([effects]
+static_friction = 0.6
+dynamic_friction = 0.5
+[[colliders]]
+shape = "plane"
+position_m = [0.0, 0.0, 0.1]
+axis = [1.0, 0.0, 0.0]
+angle_deg = 180
+[[colliders]]
+shape = "box"
+half_extents_m = [0.03, 0.02, 0.005]
+static_friction = 0.2
+keyframes = [ { time_s = 0.0, position_m = [0.0, 0.0, 0.08] },
+              { time_s = 1.5, position_m = [0.0, 0.0, 0.01], axis = [0.0, 0.0, 1.0], angle_deg = 90 } ]
+[[colliders]]
+shape = "capsule"
+radius_m = 0.01
+half_length_m = 0.03
+)", "s.toml");
+  ASSERT_EQ(scene.pour.colliders.size(), 3u);
+  const xpbd::Collider& lid = scene.pour.colliders[0];
+  EXPECT_EQ(lid.shape, xpbd::ColliderShape::kHalfSpace);
+  EXPECT_NEAR((lid.motion[0].rotation * xpbd::Vec3::UnitZ() + xpbd::Vec3::UnitZ()).norm(), 0.0, 1e-12);  // facing down
+  EXPECT_EQ(lid.static_friction, 0.6);  // the grains' by default
+  const xpbd::Collider& hand = scene.pour.colliders[1];
+  EXPECT_EQ(hand.shape, xpbd::ColliderShape::kBox);
+  EXPECT_EQ(hand.half_extents, xpbd::Vec3(0.03, 0.02, 0.005));
+  EXPECT_EQ(hand.static_friction, 0.2);
+  EXPECT_EQ(hand.dynamic_friction, 0.2);  // capped by its own static friction
+  ASSERT_EQ(hand.motion.size(), 2u);
+  EXPECT_EQ(hand.motion[1].time, 1.5);
+  EXPECT_NEAR((hand.motion[1].rotation * xpbd::Vec3::UnitX() - xpbd::Vec3::UnitY()).norm(), 0.0, 1e-12);
+  EXPECT_EQ(scene.pour.colliders[2].half_length, 0.03);
+  EXPECT_NO_THROW(validate(scene.pour));
+
+  const std::string box = "[[colliders]]\nshape = \"box\"\n";
+  EXPECT_TRUE(error_of("[[colliders]]\nradius_m = 1\n").starts_with("bad.toml:1: [colliders.1] needs a shape"));
+  EXPECT_TRUE(error_of("[[colliders]]\nshape = \"cone\"\n").starts_with("bad.toml:2: [colliders.1] shape = \"cone\""));
+  EXPECT_TRUE(error_of("[[colliders]]\nshape = \"sphere\"\n").starts_with("bad.toml:1: [colliders.1] a sphere needs radius_m"));
+  EXPECT_TRUE(error_of(box + "half_extents_m = [1, 2]\n").starts_with("bad.toml:3: [colliders.1] half_extents_m = [ 1, 2 ]: expected three numbers"));
+  EXPECT_TRUE(error_of(box + "half_extents_m = [1, 2, 3]\nradius_m = 1\n").starts_with("bad.toml:4: [colliders.1] has no key 'radius_m'"));
+  EXPECT_TRUE(error_of(box + "half_extents_m = [1, 2, 3]\nkeyframes = [ { time_s = 1.0 }, { time_s = 0.5 } ]\n")
+                  .starts_with("bad.toml:4: [colliders.1.keyframes.2] time_s = 0.5: expected a time in s after the previous"));
+  EXPECT_TRUE(error_of(box + "half_extents_m = [1, 2, 3]\nkeyframes = 3\n").starts_with("bad.toml:4: [colliders.1] keyframes: expected a list"));
+  EXPECT_TRUE(error_of("colliders = 3\n").starts_with("bad.toml:1: 'colliders' must be a list of [[colliders]] tables"));
+}
+
 TEST(SceneFile, OverridesReplaceOrAddKeysAndAreCheckedTheSameWay) {
   const SceneDescription scene = parse_scene("[grains]\ncount = 800\n", "s.toml", {"grains.count=40", "solver.frames=5"});
   EXPECT_EQ(scene.pour.count, 40);
