@@ -119,6 +119,15 @@ class Section {
   void require(bool ok, const std::string& key, const std::string& expected) const {
     if (!ok) fail(*table_->get(key), key, expected);
   }
+  /// Throws a SceneError at the value's line: "[section] key = value: expected ...".
+  [[noreturn]] void fail(const toml::node& node, const std::string& key, const std::string& expected) const {
+    throw SceneError(at(source_, node.source()) + ": [" + name_ + "] " + key + " = " + shown(node) + ": expected " +
+                     expected);
+  }
+  /// Throws a SceneError at the section's own line: "[section] what".
+  [[noreturn]] void fail_here(const std::string& what) const {
+    throw SceneError(at(source_, table_->source()) + ": [" + name_ + "] " + what);
+  }
   void finish() const {
     if (!table_) return;
     for (auto&& [key, node] : *table_)
@@ -131,10 +140,6 @@ class Section {
   const toml::node* find(const std::string& key) {
     asked_.push_back(key);
     return table_ ? table_->get(key) : nullptr;
-  }
-  [[noreturn]] void fail(const toml::node& node, const std::string& key, const std::string& expected) const {
-    throw SceneError(at(source_, node.source()) + ": [" + name_ + "] " + key + " = " + shown(node) + ": expected " +
-                     expected);
   }
 
   const toml::table* table_;
@@ -189,12 +194,11 @@ xpbd::Collider read_collider(const toml::table& table, const std::string& source
   Section section(&table, source, name);
   xpbd::Collider c;
   const std::string shape = section.choice("shape", "", {"plane", "sphere", "box", "capsule"});
-  if (shape.empty())
-    throw SceneError(at(source, table.source()) + ": [" + name + "] needs a shape: 'plane', 'sphere', 'box' or 'capsule'");
+  if (shape.empty()) section.fail_here("needs a shape: 'plane', 'sphere', 'box' or 'capsule'");
   const auto positive = [](double v) { return v > 0.0 && v <= 10.0; };
   const auto size = [&](const std::string& key) {
     const double v = section.number(key, 0.0, positive, "a number in (0, 10]");
-    if (v == 0.0) throw SceneError(at(source, table.source()) + ": [" + name + "] a " + shape + " needs " + key);
+    if (v == 0.0) section.fail_here("a " + shape + " needs " + key);
     return v;
   };
   if (shape == "plane") c.shape = xpbd::ColliderShape::kHalfSpace;
@@ -205,8 +209,7 @@ xpbd::Collider read_collider(const toml::table& table, const std::string& source
   if (shape == "box") {
     c.shape = xpbd::ColliderShape::kBox;
     c.half_extents = section.vector3("half_extents_m", xpbd::Vec3::Zero(), 10.0);
-    if (!(c.half_extents.minCoeff() > 0.0))
-      throw SceneError(at(source, table.source()) + ": [" + name + "] a box needs half_extents_m, three sizes > 0");
+    if (!(c.half_extents.minCoeff() > 0.0)) section.fail_here("a box needs half_extents_m, three sizes > 0");
   }
   if (shape == "capsule") {
     c.shape = xpbd::ColliderShape::kCapsule;
@@ -223,7 +226,7 @@ xpbd::Collider read_collider(const toml::table& table, const std::string& source
   } else {
     const toml::array* list = keyframes->as_array();
     if (!list || list->empty() || !list->is_array_of_tables())
-      throw SceneError(at(source, keyframes->source()) + ": [" + name + "] keyframes: expected a list of { time_s = ..., position_m = [...] }");
+      section.fail(*keyframes, "keyframes", "a list of { time_s = ..., position_m = [...] }");
     c.motion.clear();
     for (size_t k = 0; k < list->size(); ++k) {
       const toml::table& entry = *(*list)[k].as_table();
@@ -232,7 +235,7 @@ xpbd::Collider read_collider(const toml::table& table, const std::string& source
       const double time = key.number("time_s", c.motion.empty() ? 0.0 : NAN,
                                      [&](double t) { return t > previous && t <= 1e4; },
                                      "a time in s after the previous keyframe's, at most 1e4");
-      if (std::isnan(time)) throw SceneError(at(source, entry.source()) + ": [" + name + ".keyframes." + std::to_string(k + 1) + "] needs time_s");
+      if (std::isnan(time)) key.fail_here("needs time_s");
       c.motion.push_back(read_pose(key, time));
       key.finish();
     }

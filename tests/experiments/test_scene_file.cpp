@@ -155,7 +155,7 @@ half_length_m = 0.03
   EXPECT_TRUE(error_of(box + "half_extents_m = [1, 2, 3]\nradius_m = 1\n").starts_with("bad.toml:4: [colliders.1] has no key 'radius_m'"));
   EXPECT_TRUE(error_of(box + "half_extents_m = [1, 2, 3]\nkeyframes = [ { time_s = 1.0 }, { time_s = 0.5 } ]\n")
                   .starts_with("bad.toml:4: [colliders.1.keyframes.2] time_s = 0.5: expected a time in s after the previous"));
-  EXPECT_TRUE(error_of(box + "half_extents_m = [1, 2, 3]\nkeyframes = 3\n").starts_with("bad.toml:4: [colliders.1] keyframes: expected a list"));
+  EXPECT_TRUE(error_of(box + "half_extents_m = [1, 2, 3]\nkeyframes = 3\n").starts_with("bad.toml:4: [colliders.1] keyframes = 3: expected a list"));
   EXPECT_TRUE(error_of("colliders = 3\n").starts_with("bad.toml:1: 'colliders' must be a list of [[colliders]] tables"));
 }
 
