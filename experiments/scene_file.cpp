@@ -147,7 +147,7 @@ class Section {
   std::vector<std::string> asked_;
 };
 
-const std::vector<std::string> kSections{"scene", "grains", "solver", "container", "emitter", "effects"};
+const std::vector<std::string> kSections{"scene", "grains", "solver", "container", "emitter", "effects", "render"};
 
 toml::table parse_toml(std::string_view text, const std::string& source) {
   try {
@@ -320,6 +320,30 @@ SceneDescription parse_scene(std::string_view text, const std::string& source, c
   p.sleeping = effects.flag("sleeping", p.sleeping);
   p.render_meshes = effects.flag("render_meshes", p.render_meshes);
   effects.finish();
+
+  if (document.get("render")) {
+    Section render = section("render");
+    SceneRender r;
+    r.width = static_cast<int>(render.integer_in("width", r.width, 16, 16384));
+    r.height = static_cast<int>(render.integer_in("height", r.height, 16, 16384));
+    r.samples_per_pixel = static_cast<int>(render.integer_in("samples_per_pixel", r.samples_per_pixel, 1, 1 << 20));
+    r.sun_elevation_degrees = render.number_in("sun_elevation_deg", r.sun_elevation_degrees, -90.0, 90.0);
+    r.sun_azimuth_degrees = render.number_in("sun_azimuth_deg", r.sun_azimuth_degrees, -360.0, 360.0);
+    r.sun_irradiance = render.number_in("sun_irradiance", r.sun_irradiance, 0.0, 1e3);
+    r.sky_radiance = render.number_in("sky_radiance", r.sky_radiance, 0.0, 1e3);
+    r.ground = render.flag("ground", r.ground);
+    if (render.has("eye_m") || render.has("look_at_m")) {
+      r.eye = render.vector3("eye_m", xpbd::Vec3::Zero(), 1e3);
+      r.look_at = render.vector3("look_at_m", xpbd::Vec3::Zero(), 1e3);
+      if (!render.has("eye_m") || !render.has("look_at_m")) render.fail_here("give both eye_m and look_at_m, or neither");
+      render.require(*r.eye != *r.look_at, "look_at_m", "a point other than eye_m");
+    }
+    r.vertical_fov_degrees = render.number("fov_deg", r.vertical_fov_degrees, [](double v) { return v > 0.0 && v < 180.0; },
+                                           "a number in (0, 180)");
+    if (p.body != xpbd::BodyKind::kRigid) render.fail_here("is for rigid grains: a soft pour cannot be rendered yet");
+    render.finish();
+    scene.render = r;
+  }
 
   if (const toml::array* colliders = document["colliders"].as_array())
     for (size_t c = 0; c < colliders->size(); ++c)

@@ -17,6 +17,9 @@
 //                0: all at once, a clump)
 //   [effects]    friction (bool), static_friction, dynamic_friction, cohesion, sleeping,
 //                render_meshes
+//   [render]     width, height, samples_per_pixel, sun_elevation_deg, sun_azimuth_deg,
+//                sun_irradiance, sky_radiance, ground (bool), eye_m and look_at_m (both or
+//                neither; neither: framed on the grains), fov_deg; rigid grains only
 //   [[colliders]] (any number, beside the container) shape ("plane" | "sphere" | "box" |
 //                "capsule") with its sizes (radius_m; half_extents_m = [x, y, z]; radius_m and
 //                half_length_m), static_friction and dynamic_friction (default: the grains'),
@@ -29,6 +32,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -43,11 +47,26 @@ class SceneError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// `[render]`: the last frame rendered after the simulation (rigid grains), by `rice render`'s
+/// renderer with the CDRF at the grains' water content.
+struct SceneRender {
+  int width = 640, height = 480;
+  int samples_per_pixel = 16;
+  double sun_elevation_degrees = 50.0, sun_azimuth_degrees = -30.0;
+  double sun_irradiance = 3.0;  ///< 0: no sun
+  double sky_radiance = 0.3;
+  bool ground = true;
+  /// The camera, when the file gives one; otherwise it frames the grains.
+  std::optional<xpbd::Vec3> eye, look_at;
+  double vertical_fov_degrees = 30.0;
+};
+
 struct SceneDescription {
   std::string name;
   std::string description;
   /// What runs: for now every scene is grains poured from a spout into a container.
   PourSettings pour;
+  std::optional<SceneRender> render;  ///< none: no [render] section
 };
 
 /// Reads scene text; `source` names it in messages (a file path). `overrides` are

@@ -6,9 +6,39 @@
 #include <sstream>
 
 #include "experiments/output.hpp"
+#include "experiments/render_command.hpp"
+#include "grains/absorption_table.hpp"
+#include "grains/water_content.hpp"
 #include "experiments/scene_file.hpp"
 
 namespace rice::experiments {
+namespace {
+
+/// `rice render --pour` of the run's last frame, the grains at their water content.
+RenderCommandSettings render_settings(const SceneRender& r, const PourSettings& pour, const std::filesystem::path& run) {
+  RenderCommandSettings s;
+  s.pour = run;
+  const grains::WaterContentModel water(grains::read_absorption_table(grains::default_absorption_table()));
+  s.absorption_percent = water.absorption_percent(pour.soak_minutes, pour.soak_temperature);
+  s.render.width = r.width;
+  s.render.height = r.height;
+  s.render.samples_per_pixel = r.samples_per_pixel;
+  s.sun_elevation_degrees = r.sun_elevation_degrees;
+  s.sun_azimuth_degrees = r.sun_azimuth_degrees;
+  s.sun_irradiance = r.sun_irradiance;
+  s.sky_radiance = r.sky_radiance;
+  s.ground = r.ground;
+  if (r.eye) {
+    shading::Camera camera;
+    camera.position = *r.eye;
+    camera.target = *r.look_at;
+    camera.vertical_fov_degrees = r.vertical_fov_degrees;
+    s.camera = camera;
+  }
+  return s;
+}
+
+}  // namespace
 
 PourResult run_scene_command(const std::filesystem::path& scene_file, const std::vector<std::string>& overrides,
                        const std::filesystem::path& folder) {
@@ -26,7 +56,9 @@ PourResult run_scene_command(const std::filesystem::path& scene_file, const std:
   }
   write_file_atomically(folder / "scene.toml", copy);
   std::printf("scene %s: %s\n", scene.name.c_str(), scene.description.c_str());
-  return pour_command(scene.pour, folder);
+  const PourResult result = pour_command(scene.pour, folder);
+  if (scene.render) render_command(render_settings(*scene.render, scene.pour, folder), folder / "render");
+  return result;
 }
 
 }  // namespace rice::experiments

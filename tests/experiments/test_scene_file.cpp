@@ -159,6 +159,27 @@ half_length_m = 0.03
   EXPECT_TRUE(error_of("colliders = 3\n").starts_with("bad.toml:1: 'colliders' must be a list of [[colliders]] tables"));
 }
 
+TEST(SceneFile, RenderSectionSetsTheImageAndTheCamera) {
+  const SceneDescription scene = parse_scene(R"([render]
+width = 320
+height = 200
+samples_per_pixel = 8
+eye_m = [0.0, -0.2, 0.1]
+look_at_m = [0.0, 0.0, 0.02]
+fov_deg = 40
+)", "s.toml");
+  ASSERT_TRUE(scene.render);
+  EXPECT_EQ(scene.render->width, 320);
+  EXPECT_EQ(scene.render->samples_per_pixel, 8);
+  EXPECT_EQ(*scene.render->eye, xpbd::Vec3(0.0, -0.2, 0.1));
+  EXPECT_EQ(scene.render->vertical_fov_degrees, 40.0);
+  EXPECT_FALSE(parse_scene("", "s.toml").render);  // no section, no render
+  EXPECT_TRUE(error_of("[render]\neye_m = [0, 0, 1]\n").starts_with("bad.toml:1: [render] give both eye_m and look_at_m"));
+  EXPECT_TRUE(error_of("[grains]\nbody = \"soft\"\n[render]\nwidth = 64\n")
+                  .starts_with("bad.toml:3: [render] is for rigid grains"));
+  EXPECT_TRUE(error_of("[render]\nwidth = 8\n").starts_with("bad.toml:2: [render] width = 8: expected an integer in [16, 16384]"));
+}
+
 TEST(SceneFile, OverridesReplaceOrAddKeysAndAreCheckedTheSameWay) {
   const SceneDescription scene = parse_scene("[grains]\ncount = 800\n", "s.toml", {"grains.count=40", "solver.frames=5"});
   EXPECT_EQ(scene.pour.count, 40);
@@ -175,8 +196,10 @@ TEST(SceneFile, RunWritesTheRunWithItsSceneAndABadSceneWritesNothing) {
   const std::filesystem::path chawan = std::filesystem::path(RICE_SCENES_DIR) / "chawan.toml";
   EXPECT_THROW(run_scene_command(chawan, {"grains.count=0"}, out), SceneError);
   EXPECT_FALSE(std::filesystem::exists(out));
-  run_scene_command(chawan, {"grains.count=20", "grains.variants=2", "solver.frames=3"}, out);
-  for (const char* file : {"scene.toml", "stats.csv", "run_info.txt", "grains.csv"})
+  run_scene_command(chawan, {"grains.count=20", "grains.variants=2", "solver.frames=3", "render.width=32",
+                             "render.height=24", "render.samples_per_pixel=1"},
+                    out);
+  for (const char* file : {"scene.toml", "stats.csv", "run_info.txt", "grains.csv", "render/render.png"})
     EXPECT_TRUE(std::filesystem::exists(out / file)) << file;
   // The copy reads back as the scene it ran.
   const SceneDescription copy = read_scene_file(out / "scene.toml");
@@ -212,7 +235,8 @@ TEST(Figure10, RunsTheDropSceneAtEachSoakTimeAndTabulatesThePiles) {
   Figure10Settings s;
   s.scene = std::filesystem::path(RICE_SCENES_DIR) / "drop.toml";
   s.soak_minutes = {15.0, 240.0};
-  s.overrides = {"grains.count=12", "grains.variants=2", "solver.frames=4"};
+  s.overrides = {"grains.count=12", "grains.variants=2", "solver.frames=4", "render.width=32", "render.height=24",
+                 "render.samples_per_pixel=1"};
   figure10_command(s, out);
   std::ifstream table(out / "figure10.csv");
   std::string line;

@@ -105,6 +105,13 @@ void read_scene(std::string_view bytes) {
   expect(p.dynamic_friction >= 0.0 && p.dynamic_friction <= p.static_friction && p.static_friction <= 10.0,
          "friction coefficients outside 0 <= mu_k <= mu_s <= 10");
   expect(!p.vertex_block_descent || p.body == xpbd::BodyKind::kSoft, "vertex block descent on rigid grains");
+  if (const auto& r = scene->render)
+    expect(r->width >= 16 && r->width <= 16384 && r->height >= 16 && r->height <= 16384 && r->samples_per_pixel >= 1 &&
+               r->vertical_fov_degrees > 0.0 && r->vertical_fov_degrees < 180.0 && r->eye.has_value() == r->look_at.has_value() &&
+               p.body == xpbd::BodyKind::kRigid,
+           "a render setting outside the documented ranges");
+  for (const xpbd::Collider& c : p.colliders)
+    expect(!c.motion.empty() && c.dynamic_friction <= c.static_friction, "a collider without a pose or with mu_k > mu_s");
   const experiments::SceneDescription again = experiments::parse_scene(bytes, kName);
   expect(again.name == scene->name && again.pour.count == p.count && again.pour.seed == p.seed,
          "two reads of one input differ");
