@@ -18,6 +18,9 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 ./build/experiments/rice study grain-substeps --out out/grain-substeps
 ./build/experiments/rice study contact --out out/contact
 ./build/experiments/rice study cdrf --out out/cdrf
+./build/experiments/rice figure 10 --out out/figure10
+./build/experiments/rice run experiments/scenes/chawan.toml --out out/scenes/chawan
+./build/experiments/rice run experiments/scenes/press.toml --out out/scenes/press
 ./build/experiments/rice figure 13 --out out/figure13
 ./build/experiments/rice study render --out out/render-study
 ./build/experiments/rice render --pour out/pour --width 1280 --height 720 --spp 64 \
