@@ -351,12 +351,16 @@ SceneDescription parse_scene(std::string_view text, const std::string& source, c
   return scene;
 }
 
-SceneDescription read_scene_file(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
+std::string read_scene_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path.string() + ": cannot be read");
   std::ostringstream text;
   text << in.rdbuf();
-  return parse_scene(text.str(), path.string(), overrides);
+  return text.str();
+}
+
+SceneDescription read_scene_file(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
+  return parse_scene(read_scene_text(path), path.string(), overrides);
 }
 
 }  // namespace rice::experiments

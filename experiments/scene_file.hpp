@@ -73,6 +73,9 @@ struct SceneDescription {
 /// "section.key=value" strings applied before reading.
 SceneDescription parse_scene(std::string_view text, const std::string& source, const std::vector<std::string>& overrides = {});
 
+/// The file's text (SceneError when it cannot be read).
+std::string read_scene_text(const std::filesystem::path& path);
+
 /// Reads a scene file (SceneError when it cannot be read).
 SceneDescription read_scene_file(const std::filesystem::path& path, const std::vector<std::string>& overrides = {});
 

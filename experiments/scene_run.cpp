@@ -2,14 +2,12 @@
 #include "experiments/scene_run.hpp"
 
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 #include "experiments/output.hpp"
 #include "experiments/render_command.hpp"
+#include "experiments/scene_file.hpp"
 #include "grains/absorption_table.hpp"
 #include "grains/water_content.hpp"
-#include "experiments/scene_file.hpp"
 
 namespace rice::experiments {
 namespace {
@@ -41,15 +39,12 @@ RenderCommandSettings render_settings(const SceneRender& r, const PourSettings& 
 }  // namespace
 
 PourResult run_scene_command(const std::filesystem::path& scene_file, const std::vector<std::string>& overrides,
-                       const std::filesystem::path& folder) {
-  std::ifstream in(scene_file, std::ios::binary);
-  if (!in) throw SceneError(scene_file.string() + ": cannot be read");
-  std::ostringstream text;
-  text << in.rdbuf();
-  const SceneDescription scene = parse_scene(text.str(), scene_file.string(), overrides);
+                             const std::filesystem::path& folder) {
+  const std::string text = read_scene_text(scene_file);
+  const SceneDescription scene = parse_scene(text, scene_file.string(), overrides);
   validate(scene.pour);
   make_output_folder(folder);
-  std::string copy = text.str();
+  std::string copy = text;
   if (!overrides.empty()) {
     copy += "\n# overridden on the command line (rice run --set):\n";
     for (const std::string& o : overrides) copy += "#   " + o + "\n";
