@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numeric>
 
-#include "xpbd/body.hpp"
+#include "xpbd/penetration.hpp"
 
 namespace rice::experiments {
 
@@ -22,40 +22,31 @@ double footprint_radius(const std::vector<xpbd::Vec3>& centres, double fraction)
 }
 
 int count_clusters(const xpbd::Model& model, double gap) {
-  const int n = static_cast<int>(model.bodies.size());
-  // Each body's spheres now, and their box grown by the gap.
-  std::vector<std::vector<xpbd::Vec3>> centres(n);
-  std::vector<std::vector<double>> radii(n);
-  std::vector<xpbd::Vec3> lower(n, xpbd::Vec3::Constant(INFINITY)), upper(n, xpbd::Vec3::Constant(-INFINITY));
-  for (int b = 0; b < n; ++b) {
-    const xpbd::Body& body = model.bodies[b];
-    for (int s = 0; s < body.sphere_count(); ++s) {
-      centres[b].push_back(xpbd::sphere_centre(model, body, s));
-      radii[b].push_back(xpbd::sphere_radius(model, body, s));
-      lower[b] = lower[b].cwiseMin(centres[b].back() - xpbd::Vec3::Constant(radii[b].back() + gap));
-      upper[b] = upper[b].cwiseMax(centres[b].back() + xpbd::Vec3::Constant(radii[b].back()));
-    }
-  }
-  std::vector<int> parent(n);
+  // Body pairs whose sphere boxes, grown by the gap, overlap (the sort-and-sweep broad phase),
+  // then their sphere pairs; touching pairs join their groups (union–find).
+  const std::vector<xpbd::PlacedSpheres> placed = xpbd::placed_spheres(model);
+  std::vector<xpbd::Box> boxes;
+  for (const xpbd::PlacedSpheres& p : placed)
+    boxes.push_back({p.box.lower - xpbd::Vec3::Constant(gap), p.box.upper});
+  const auto touch = [&](int a, int b) {
+    const xpbd::PlacedSpheres &pa = placed[a], &pb = placed[b];
+    for (size_t i = 0; i < pa.centres.size(); ++i)
+      for (size_t j = 0; j < pb.centres.size(); ++j)
+        if ((pa.centres[i] - pb.centres[j]).norm() < pa.radii[i] + pb.radii[j] + gap) return true;
+    return false;
+  };
+  std::vector<int> parent(placed.size());
   std::iota(parent.begin(), parent.end(), 0);
   const auto root = [&](int b) {
     while (parent[b] != b) b = parent[b] = parent[parent[b]];
     return b;
   };
-  const auto touch = [&](int a, int b) {
-    if ((lower[a].array() > upper[b].array()).any() || (lower[b].array() > upper[a].array()).any()) return false;
-    for (size_t i = 0; i < centres[a].size(); ++i)
-      for (size_t j = 0; j < centres[b].size(); ++j)
-        if ((centres[a][i] - centres[b][j]).norm() < radii[a][i] + radii[b][j] + gap) return true;
-    return false;
-  };
-  int groups = n;
-  for (int a = 0; a < n; ++a)
-    for (int b = a + 1; b < n; ++b)
-      if (root(a) != root(b) && touch(a, b)) {
-        parent[root(a)] = root(b);
-        --groups;
-      }
+  int groups = static_cast<int>(placed.size());
+  for (const auto& [a, b] : xpbd::overlapping_pairs(boxes))
+    if (root(a) != root(b) && touch(a, b)) {
+      parent[root(a)] = root(b);
+      --groups;
+    }
   return groups;
 }
 

@@ -1,8 +1,6 @@
 // Contacts as terms of each particle's step; see particle_contacts.hpp.
 #include "xpbd/particle_contacts.hpp"
 
-#include <algorithm>
-
 namespace rice::xpbd {
 
 double ParticleContact::value(const Positions& x) const {
@@ -10,8 +8,6 @@ double ParticleContact::value(const Positions& x) const {
   for (int j = 0; j < size; ++j) sum += weights[j] * x.row(particles[j]).transpose();
   return normal.dot(sum) - offset;
 }
-
-double ParticleContact::push(const Positions& x) const { return std::max(0.0, force - stiffness * value(x)); }
 
 void ParticleContacts::index(int particle_count) {
   first_.assign(particle_count + 1, 0);
@@ -43,8 +39,7 @@ double ParticleContacts::particle_energy(const Positions& x, int i, const Vec3& 
   double energy = 0.0;
   for (int e = first_[i]; e < first_[i + 1]; ++e) {
     const ParticleContact& c = contacts_[entries_[e].contact];
-    const double C = c.value(x) + c.weights[entries_[e].slot] * c.normal.dot(offset);
-    const double push = std::max(0.0, c.force - c.stiffness * C);
+    const double push = c.push_at(c.value(x) + c.weights[entries_[e].slot] * c.normal.dot(offset));
     energy += 0.5 * push * push / c.stiffness;
   }
   return energy;

@@ -20,6 +20,7 @@
 // grain starts each step with the force that holds it.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -36,8 +37,9 @@ struct ParticleContact {
   double force = 0.0;      ///< λ [N]
   double stiffness = 0.0;  ///< k [N/m]
   double value(const Positions& x) const;  ///< C(x) [m]
-  /// max(0, λ − k C): the force it pushes with at x [N].
-  double push(const Positions& x) const;
+  /// max(0, λ − k C): the force it pushes with at C [N].
+  double push_at(double C) const { return std::max(0.0, force - stiffness * C); }
+  double push(const Positions& x) const { return push_at(value(x)); }
 };
 
 /// The contacts of a substep and, for each particle, which of them it is a corner of.
