@@ -6,6 +6,7 @@
 #include <openvdb/tools/LevelSetMeasure.h>
 #include <openvdb/tools/MeshToVolume.h>
 #include <openvdb/tools/ParticlesToLevelSet.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -137,8 +138,15 @@ openvdb::FloatGrid::Ptr signed_distance_field(const SurfaceMesh& mesh, double vo
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
     triangles[f] = openvdb::Vec3I(mesh.F(f, 0), mesh.F(f, 1), mesh.F(f, 2));
   const auto transform = openvdb::math::Transform::createLinearTransform(voxel_size);
-  auto grid = openvdb::tools::meshToSignedDistanceField<openvdb::FloatGrid>(
-      *transform, points, triangles, {}, float(band_width), std::numeric_limits<float>::max());
+  // On one thread: OpenVDB 10's sign correction of intersecting voxels reads neighbouring
+  // leaves that other threads may be flipping, so on several threads a rare voxel's sign, and
+  // with it the pores drawn against this field, changed from run to run (same seed, different
+  // grain). Grains are generated in parallel with each other, so little is lost.
+  openvdb::FloatGrid::Ptr grid;
+  tbb::task_arena(1).execute([&] {
+    grid = openvdb::tools::meshToSignedDistanceField<openvdb::FloatGrid>(
+        *transform, points, triangles, {}, float(band_width), std::numeric_limits<float>::max());
+  });
   grid->setGridClass(openvdb::GRID_LEVEL_SET);
   return grid;
 }

@@ -68,7 +68,8 @@ PorousLevelSet make_porous_level_set(const SurfaceMesh& base, const PorosityPara
                                      RandomStream& random);
 
 /// Signed distance field of a closed surface, narrow band `band_width` voxels outside and
-/// filled through the whole interior (eq. 1, Euclidean).
+/// filled through the whole interior (eq. 1, Euclidean); built on one thread, so that the same
+/// mesh always gives the same field.
 openvdb::FloatGrid::Ptr signed_distance_field(const SurfaceMesh& mesh, double voxel_size, double band_width);
 
 /// A sphere in world space [m].
