@@ -11,6 +11,7 @@ packages=(
   libeigen3-dev libtbb-dev libcli11-dev libsuitesparse-dev libopenblas0-serial
   libopenvdb-dev libboost-iostreams-dev libcgal-dev libgsl-dev libpng-dev libembree-dev libopenexr-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libtomlplusplus-dev glmark2-data
   gnuplot-nox
 )
 
