@@ -85,6 +85,7 @@ void validate(const Collider& c, int index) {
   if (!(c.static_friction >= 0.0 && c.dynamic_friction >= 0.0 && c.dynamic_friction <= c.static_friction))
     throw std::invalid_argument(name + ": need 0 <= dynamic friction <= static friction, got " +
                                 std::to_string(c.dynamic_friction) + " and " + std::to_string(c.static_friction));
+  if (!(c.removal_time > 0.0)) throw std::invalid_argument(name + ": its removal time must be positive");
   if (c.motion.empty()) throw std::invalid_argument(name + ": needs at least one keyframe");
   for (size_t k = 0; k < c.motion.size(); ++k) {
     const ColliderKeyframe& key = c.motion[k];

@@ -5,6 +5,7 @@
 // displacement of its surface over the substep.
 #pragma once
 
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -40,7 +41,13 @@ struct Collider {
   std::vector<ColliderKeyframe> motion{ColliderKeyframe{}};
   double static_friction = 0.0;   ///< μ_s against grains
   double dynamic_friction = 0.0;  ///< μ_k against grains
+  /// [s] From this time on the collider is gone (a mould taken away); the sleeping bodies it
+  /// touched wake.
+  double removal_time = INFINITY;
 };
+
+/// Whether the collider is there at time t (before its removal time).
+inline bool collider_present(const Collider& collider, double time) { return time < collider.removal_time; }
 
 /// The collider's pose at time t.
 ColliderKeyframe collider_pose(const Collider& collider, double time);

@@ -101,8 +101,10 @@ void ContactSolver::find_candidates(double time, double span) {
   }
   for (size_t c = 0; c < model_.colliders.size(); ++c) {
     const Collider& collider = model_.colliders[c];
+    if (!collider_present(collider, time)) continue;
     const ColliderKeyframe start = collider_pose(collider, time), end = collider_pose(collider, time + span);
-    const bool moving = !same_pose(start, end);
+    // A collider that goes in this interval wakes what rests on it, as one that moves.
+    const bool moving = !same_pose(start, end) || !collider_present(collider, time + span);
     for (size_t b = 0; b < bodies.size(); ++b) {
       if (bodies[b].asleep && !moving) continue;  // a sleeping body rests on a collider at rest
       const int first = static_cast<int>(sphere_pairs_.size());
@@ -216,6 +218,7 @@ bool ContactSolver::may_touch(const BodyPair& pair) const {
   // trilinear grid, whose gradient has components of at most 1; 1 for the analytic shapes).
   const int k = collider_index(pair.b);
   const Collider& collider = model_.colliders[k];
+  if (!present_[k]) return false;
   if (!same_pose(pose_start_[k], pose_end_[k])) return true;
   const double lipschitz = collider.shape == ColliderShape::kDistanceGrid ? std::sqrt(3.0) : 1.0;
   const Vec3 centre = 0.5 * (box_a.lower + box_a.upper);
@@ -229,9 +232,11 @@ void ContactSolver::begin_substep(double time, double h, const Positions& x_prev
   std::vector<CohesionBonds::Touch> touches;  // filled only when cohesion is on
   pose_start_.clear();
   pose_end_.clear();
+  present_.clear();
   for (const Collider& collider : model_.colliders) {
     pose_start_.push_back(collider_pose(collider, time));
     pose_end_.push_back(collider_pose(collider, time + h));
+    present_.push_back(collider_present(collider, time));
   }
   // The sphere centres of every body with candidates, now (after prediction) and at the
   // substep's start, once.

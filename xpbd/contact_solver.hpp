@@ -174,6 +174,7 @@ class ContactSolver {
   std::vector<int> active_bodies_;       ///< bodies with candidates, increasing
   std::vector<Contact> contacts_;
   std::vector<ColliderKeyframe> pose_start_, pose_end_;  ///< collider poses at the substep's ends
+  std::vector<char> present_;  ///< whether each collider is there in the substep
   ContactStatistics statistics_;
   bool has_friction_ = false;
   std::optional<CohesionBonds> bonds_;  ///< only when cohesion is on

@@ -37,6 +37,7 @@ Penetration deepest_penetration(const Model& model, double time) {
                                           pa.radii[i] + pb.radii[j] - (pa.centres[i] - pb.centres[j]).norm());
   }
   for (const Collider& collider : model.colliders) {
+    if (!collider_present(collider, time)) continue;
     const ColliderKeyframe pose = collider_pose(collider, time);
     for (const PlacedSpheres& p : placed)
       for (size_t i = 0; i < p.centres.size(); ++i) {

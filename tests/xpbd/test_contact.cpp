@@ -203,6 +203,38 @@ TEST(Colliders, SignedDistancesHaveUnitGradientsMatchingFiniteDifferences) {
   EXPECT_NEAR(local_signed_distance(capsule, Vec3(0.0, 0.0, -0.5)).distance, 0.15, 1e-15);
 }
 
+TEST_P(GrainContact, WakesAndFallsWhenItsColliderIsRemoved) {
+  // A grain asleep on a shelf 5 cm up; the shelf is removed at t = 2.5 s (a mould taken away):
+  // the grain must wake, fall freely and land on the ground.
+  Model model;
+  const int grain = add_grain(model, GetParam(), Vec3(0.0, 0.0, 0.05 + 1e-4));
+  Collider shelf = half_space(Vec3::UnitZ(), 0.0, 0.5, 0.4);
+  shelf.motion.front().translation = Vec3(0.0, 0.0, 0.05);
+  shelf.removal_time = 2.5;
+  model.colliders = {half_space(Vec3::UnitZ(), 0.0, 0.5, 0.4), shelf};
+  model.sleep.enabled = true;
+  Solver solver(model, scene_settings(GetParam(), 1.0 / 30.0, 80));
+  while (solver.time() < 2.4) solver.step();
+  ASSERT_TRUE(model.bodies[grain].asleep);
+  const double shelf_height = body_centre(model, grain).z();
+  EXPECT_GT(shelf_height, 0.05);
+  // The frame that ends at the removal wakes it; the shelf holds it until then.
+  while (solver.time() < 2.5 - 1e-9) solver.step();
+  EXPECT_FALSE(model.bodies[grain].asleep);
+  EXPECT_NEAR(body_centre(model, grain).z(), shelf_height, 1e-6);
+  // Then one frame of free fall: N substeps of symplectic Euler from rest fall
+  // ½ g Δt² (1 + 1/N).
+  solver.step();
+  const int n = scene_settings(GetParam(), 1.0 / 30.0, 80).substeps;
+  EXPECT_NEAR(shelf_height - body_centre(model, grain).z(), 0.5 * 9.81 / (30.0 * 30.0) * (1.0 + 1.0 / n), 1e-7);
+  for (int k = 0; k < 30; ++k) solver.step();
+  EXPECT_LT(body_centre(model, grain).z(), 0.01);  // on the ground
+  EXPECT_GT(lowest_point(model, grain), -0.01 * kGrainThickness);
+  Collider bad = shelf;
+  bad.removal_time = 0.0;
+  EXPECT_THROW(validate(bad, 1), std::invalid_argument);
+}
+
 TEST(Colliders, KeyframesInterpolateAndBadCollidersAreRefused) {
   Collider moving;
   moving.motion = {{0.0, Vec3::Zero(), Quat::Identity()}, {2.0, Vec3(0.0, 0.0, 1.0), Quat::Identity()}};
