@@ -8,7 +8,7 @@
 
 namespace rice::experiments {
 
-xpbd::DistanceGrid distance_grid_of(const grains::SurfaceMesh& mesh, double spacing, double margin) {
+xpbd::DistanceGrid distance_grid_of(const grains::SurfaceMesh& mesh, double spacing, double margin, bool hollow) {
   if (!(spacing > 0.0) || !std::isfinite(spacing) || !(margin >= 0.0))
     throw std::invalid_argument("distance grid: spacing must be positive and margin non-negative");
   constexpr double kBandVoxels = 3.0;
@@ -27,11 +27,12 @@ xpbd::DistanceGrid distance_grid_of(const grains::SurfaceMesh& mesh, double spac
     throw std::invalid_argument("distance grid: " + std::to_string(points) + " points; use a coarser spacing");
   grid.values.resize(static_cast<size_t>(points));
   const auto accessor = field->getConstAccessor();
+  const float sign = hollow ? -1.0f : 1.0f;
   for (int k = 0; k < grid.size.z(); ++k)
     for (int j = 0; j < grid.size.y(); ++j)
       for (int i = 0; i < grid.size.x(); ++i)
         grid.values[i + grid.size.x() * (j + grid.size.y() * k)] =
-            accessor.getValue(openvdb::Coord(first.x() + i, first.y() + j, first.z() + k));
+            sign * accessor.getValue(openvdb::Coord(first.x() + i, first.y() + j, first.z() + k));
   return grid;
 }
 

@@ -9,8 +9,10 @@
 namespace rice::experiments {
 
 /// φ of `mesh` on grid points `spacing` apart covering its bounding box grown by `margin`
-/// (filled inside; beyond OpenVDB's band of 3 voxels outside, φ reads 3 voxels). Throws
+/// (filled inside; beyond OpenVDB's band of 3 voxels outside, φ reads 3 voxels). `hollow`:
+/// −φ, the solid outside the mesh and the room inside it (a mould holding grains). Throws
 /// std::invalid_argument for a spacing that is not positive or a grid over 2^28 points.
-xpbd::DistanceGrid distance_grid_of(const grains::SurfaceMesh& mesh, double spacing, double margin);
+xpbd::DistanceGrid distance_grid_of(const grains::SurfaceMesh& mesh, double spacing, double margin,
+                                    bool hollow = false);
 
 }  // namespace rice::experiments

@@ -2,6 +2,7 @@
 #include "experiments/pour_scene.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -16,6 +17,7 @@
 #include "experiments/gnuplot.hpp"
 #include "experiments/interrupt.hpp"
 #include "experiments/item_loop.hpp"
+#include "experiments/mould_fill.hpp"
 #include "experiments/output.hpp"
 #include "experiments/pile_measures.hpp"
 #include "grains/absorption_table.hpp"
@@ -143,6 +145,14 @@ void validate(const PourSettings& s) {
     require(s.colliders[c].shape != xpbd::ColliderShape::kDistanceGrid, "scene colliders are analytic shapes");
     xpbd::validate(s.colliders[c], static_cast<int>(c) + 1);  // 0 is the container
   }
+  for (const MeshCollider& m : s.mesh_colliders) {
+    require(m.mesh.F.rows() > 0 && m.mesh.V.allFinite(), "a mesh collider needs triangles and finite vertices");
+    require(m.grid_spacing >= 2e-4 && m.grid_spacing <= 1e-2, "a mesh collider's grid spacing must be in [2e-4, 1e-2] m");
+  }
+  require(s.fill_round_seconds > 0.0 && s.fill_round_seconds <= 1e3, "the fill's rounds must be (0, 1e3] s apart");
+  require(s.fill_mould < static_cast<int>(s.mesh_colliders.size()) &&
+              (s.fill_mould < 0 || s.mesh_colliders[s.fill_mould].hollow),
+          "the mould to fill must be a hollow mesh collider");
 }
 
 int substeps_per_frame(const PourSettings& settings) {
@@ -167,23 +177,50 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
     variants[i].grain = grains::make_grain(recipe, seeds[i], 1.0);
     variants[i].spheres = grains::fit_collision_spheres(variants[i].grain.simulation);
   });
-  const auto instances = grains::make_instances(settings.count, settings.variants, recipe.cultivar, random);
+  auto instances = grains::make_instances(settings.count, settings.variants, recipe.cultivar, random);
   double longest = 0.0;
   for (const Variant& v : variants)
     longest = std::max(longest, (v.grain.simulation.V.colwise().maxCoeff() - v.grain.simulation.V.colwise().minCoeff()).norm());
   longest *= recipe.cultivar.swell_max;
   const double inner_radius = bowl_shape.rim_radius - bowl_shape.wall_thickness;
+  // Mesh colliders: their distance grids, sampled now.
+  std::vector<xpbd::Collider> mesh_colliders;
+  for (const MeshCollider& m : settings.mesh_colliders) {
+    xpbd::Collider c = m.collider;
+    c.shape = xpbd::ColliderShape::kDistanceGrid;
+    c.grid = std::make_shared<const xpbd::DistanceGrid>(distance_grid_of(m.mesh, m.grid_spacing, 0.01, m.hollow));
+    mesh_colliders.push_back(std::move(c));
+  }
   int per_layer = 0;
   const double spout_radius = settings.spout_radius > 0.0 ? settings.spout_radius
                               : plate                      ? 1.1 * longest
                                                            : 0.6 * inner_radius - longest;
-  const std::vector<Vec3> drops = spout_positions(settings.count, 1.05 * longest, spout_radius,
-                                                  settings.spout_height + (plate ? 0.0 : bowl_shape.height), &per_layer);
+  std::vector<Vec3> drops, lattice;
+  Vec3 fill_cell = Vec3::Zero();
+  if (settings.fill_mould >= 0) {
+    // Each grain along the world's axes (turned end over end or not), in a cell of the largest
+    // grain's box; each is built at the lowest point and moved to its own when released.
+    Vec3 box = Vec3::Zero();
+    for (const Variant& v : variants)
+      box = box.cwiseMax((v.grain.simulation.V.colwise().maxCoeff() - v.grain.simulation.V.colwise().minCoeff()).transpose());
+    fill_cell = 1.05 * recipe.cultivar.swell_max * box;
+    lattice = mould_lattice(mesh_colliders[settings.fill_mould], fill_cell);
+    if (lattice.empty()) throw std::invalid_argument("fill: not one grain fits in the mould");
+    drops.assign(settings.count, lattice.front());
+    const std::array<Eigen::Quaterniond, 4> turns{
+        Eigen::Quaterniond::Identity(), Eigen::Quaterniond(0.0, 1.0, 0.0, 0.0), Eigen::Quaterniond(0.0, 0.0, 1.0, 0.0),
+        Eigen::Quaterniond(0.0, 0.0, 0.0, 1.0)};
+    for (int g = 0; g < settings.count; ++g) instances[g].rotation = turns[g % 4];
+    per_layer = settings.count;
+  } else {
+    drops = spout_positions(settings.count, 1.05 * longest, spout_radius,
+                            settings.spout_height + (plate ? 0.0 : bowl_shape.height), &per_layer);
+  }
   const int layers = (settings.count + per_layer - 1) / per_layer;
   // A layer must have fallen clear of the spout, 1.05 grain lengths from rest, before the next
   // leaves: else grains are released inside each other.
   const double clear_seconds = std::sqrt(2.0 * 1.05 * longest / 9.81);
-  if (layers > 1 && settings.pour_seconds > 0.0 && settings.pour_seconds / layers < clear_seconds)
+  if (settings.fill_mould < 0 && layers > 1 && settings.pour_seconds > 0.0 && settings.pour_seconds / layers < clear_seconds)
     throw std::invalid_argument("pour: " + std::to_string(layers) + " layers of " + std::to_string(per_layer) +
                                 " grains leave the spout " + fixed(1e3 * settings.pour_seconds / layers, 1) +
                                 " ms apart, sooner than one falls clear of the next (" +
@@ -244,9 +281,9 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
                        cell(initial_centre[g].x()), cell(initial_centre[g].y()), cell(initial_centre[g].z())});
   }
   write_file_atomically(folder / "grains.csv", placement.text());
-  // Moves a parked grain to the spout, raised by `lift`, and wakes it.
-  const auto release = [&](int g, double lift) {
-    const Vec3 move = Vec3(0.0, 0.0, lift) - parking(g);
+  // Moves a parked grain to its drop point moved by `offset`, and wakes it.
+  const auto release = [&](int g, const Vec3& offset) {
+    const Vec3 move = offset - parking(g);
     xpbd::Body& body = model.bodies[g];
     if (body.kind == xpbd::BodyKind::kRigid) {
       xpbd::RigidBody& rigid = model.rigid_bodies[body.rigid_body];
@@ -286,6 +323,7 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   container.dynamic_friction = settings.dynamic_friction;
   model.colliders.push_back(container);
   model.colliders.insert(model.colliders.end(), settings.colliders.begin(), settings.colliders.end());
+  model.colliders.insert(model.colliders.end(), mesh_colliders.begin(), mesh_colliders.end());
   const double setup_seconds = seconds_since(start);
 
   xpbd::SolverSettings solver_settings;
@@ -296,30 +334,60 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   xpbd::Solver solver(model, solver_settings);
 
   CsvTable stats({"frame", "time_s", "wall_s", "awake", "candidates", "contacts", "bonds", "max_penetration_m", "kinetic_energy_j",
-                  "broad_phase_s", "narrow_phase_s", "solve_s", "sleeping_s"});
+                  "top_m", "broad_phase_s", "narrow_phase_s", "solve_s", "sleeping_s"});
+  // The highest centre of the grains released so far, and its value before the first
+  // collider is removed (a mould taken away).
+  const auto top_of_grains = [&] {
+    double top = -INFINITY;
+    for (int g = 0; g < released; ++g) top = std::max(top, xpbd::body_centre(model, model.bodies[g]).z());
+    return top;
+  };
+  double first_removal = INFINITY;
+  for (const xpbd::Collider& c : model.colliders) first_removal = std::min(first_removal, c.removal_time);
+  double top_before_removal = std::numeric_limits<double>::quiet_NaN();
+  double next_round = 0.0;  // the fill's
+  int fill_rounds = 0;
   Progress progress("pour frames", settings.frames);
   const auto simulation_start = std::chrono::steady_clock::now();
   for (int frame = 1; frame <= settings.frames; ++frame) {
     const auto frame_start = std::chrono::steady_clock::now();
-    const int due = settings.pour_seconds > 0.0
-                        ? std::min(settings.count, per_layer * (1 + static_cast<int>(std::floor(
-                                                                        solver.time() / settings.pour_seconds * layers))))
-                        : settings.count;  // a clump: every layer at once
-    if (released < due) {
-      // Layers due in the same frame (long frames) leave stacked a cell apart.
-      const double lift = spout_lift(released);
-      const int first_layer = released / per_layer;
-      for (; released < due; ++released)
-        release(released, lift + 1.05 * longest * (released / per_layer - first_layer));
+    if (settings.fill_mould >= 0) {
+      const double mould_removal = settings.mesh_colliders[settings.fill_mould].collider.removal_time;
+      if (released < settings.count && solver.time() >= next_round - 1e-9 && solver.time() < mould_removal) {
+        // A round of the fill: grains at the free lattice points, lowest first.
+        std::vector<Vec3> occupied;
+        for (int g = 0; g < released; ++g) occupied.push_back(xpbd::body_centre(model, model.bodies[g]));
+        for (const Vec3& spot : free_points(lattice, occupied, fill_cell.maxCoeff())) {
+          if (released == settings.count) break;
+          release(released, spot - drops[released]);
+          ++released;
+        }
+        next_round = solver.time() + settings.fill_round_seconds;
+        ++fill_rounds;
+      }
+    } else {
+      const int due = settings.pour_seconds > 0.0
+                          ? std::min(settings.count, per_layer * (1 + static_cast<int>(std::floor(
+                                                                          solver.time() / settings.pour_seconds * layers))))
+                          : settings.count;  // a clump: every layer at once
+      if (released < due) {
+        // Layers due in the same frame (long frames) leave stacked a cell apart.
+        const double lift = spout_lift(released);
+        const int first_layer = released / per_layer;
+        for (; released < due; ++released)
+          release(released, Vec3(0.0, 0.0, lift + 1.05 * longest * (released / per_layer - first_layer)));
+      }
     }
     solver.step();
     const double wall = seconds_since(frame_start);
     const xpbd::ContactStatistics& contact = solver.contacts()->statistics();
     const xpbd::SolverTimings& t = solver.timings();
     const long awake = std::count_if(model.bodies.begin(), model.bodies.end(), [](const xpbd::Body& b) { return !b.asleep; });
+    const double top = top_of_grains();
+    if (solver.time() <= first_removal) top_before_removal = top;
     stats.add_row({cell(frame), cell(solver.time()), cell(wall), cell(awake), cell(contact.candidates),
                    cell(contact.contacts), cell(contact.bonds),
-                   cell(contact.max_penetration), cell(xpbd::kinetic_energy(model)), cell(t.broad_phase),
+                   cell(contact.max_penetration), cell(xpbd::kinetic_energy(model)), cell(top), cell(t.broad_phase),
                    cell(t.narrow_phase), cell(t.solve()), cell(t.sleeping)});
     char name[32];
     std::snprintf(name, sizeof name, "frame_%04d", frame);
@@ -367,6 +435,8 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   result.penetration = xpbd::deepest_penetration(model, solver.time());
   result.footprint_radius = footprint_radius(centres);
   result.clusters = count_clusters(model, 1e-4);
+  result.top = top_of_grains();
+  result.top_before_removal = std::isfinite(first_removal) ? top_before_removal : std::numeric_limits<double>::quiet_NaN();
   // pile.png: the grains from the top (left) and the side (right).
   const std::string top_and_side = R"(set terminal pngcairo size 1200,560
 set output 'pile.png'
@@ -450,6 +520,8 @@ unset multiplot
                 {"awake_at_end", cell(result.awake)},
                 {"footprint_radius_m", cell(result.footprint_radius)},
                 {"clusters", cell(result.clusters)},
+                {"top_centre_at_end_m", cell(result.top)},
+                {"top_centre_before_removal_m", std::isfinite(first_removal) ? cell(result.top_before_removal) : "n/a"},
                 {"penetration_between_grains_at_end_m", cell(result.penetration.between_bodies)},
                 {"penetration_into_container_at_end_m", cell(result.penetration.into_colliders)},
                 {"cultivar", settings.cultivar},
@@ -459,8 +531,11 @@ unset multiplot
                 {"frames", cell(settings.frames)},
                 {"pour_seconds", cell(settings.pour_seconds)},
                 {"spout_height_m", cell(settings.spout_height)},
+                {"emitter", settings.fill_mould >= 0 ? "fill" : "spout"},
+                {"fill_rounds", cell(fill_rounds)},
+                {"grains_placed", cell(released)},
                 {"spout_radius_m", cell(spout_radius)},
-                {"more_colliders", cell(static_cast<long>(settings.colliders.size()))},
+                {"more_colliders", cell(static_cast<long>(settings.colliders.size() + settings.mesh_colliders.size()))},
                 {"grains_per_layer", cell(per_layer)},
                 {"fps", cell(settings.fps)},
                 {"substeps", cell(substeps_per_frame(settings))},

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "grains/mesh_types.hpp"
 #include "xpbd/body.hpp"
 #include "xpbd/collider.hpp"
 #include "xpbd/penetration.hpp"
@@ -27,6 +28,15 @@ namespace rice::experiments {
 /// Where the grains fall: into the chawan (grains/chawan.hpp), or onto a flat plate (the
 /// ground plane) from a narrow spout, forming a heap.
 enum class Container { kChawan, kPlate };
+
+/// A closed triangle mesh as a collider (scene files' `shape = "mesh"`): a mould, a hand, a
+/// plate. Its distance grid is sampled when the run starts.
+struct MeshCollider {
+  grains::SurfaceMesh mesh;    ///< in the collider's frame [m]
+  double grid_spacing = 1e-3;  ///< [m]
+  bool hollow = false;         ///< the room inside the mesh, the solid outside (a mould)
+  xpbd::Collider collider;     ///< motion, friction, removal time; shape and grid set at the start
+};
 
 struct PourSettings {
   Container container = Container::kChawan;
@@ -71,6 +81,13 @@ struct PourSettings {
   /// More colliders beside the container (scene files): planes, spheres, boxes and capsules,
   /// each with its keyframed motion, so a hand or a mould can press and withdraw.
   std::vector<xpbd::Collider> colliders;
+  std::vector<MeshCollider> mesh_colliders;
+  /// ≥ 0: no spout; the grains fill mesh_colliders[fill_mould] (hollow) in rounds
+  /// `fill_round_seconds` apart: each round puts grains, along the world's axes, at the points
+  /// of a lattice of their bounding boxes inside it that no grain is near, lowest first
+  /// (mould_fill.hpp).
+  int fill_mould = -1;
+  double fill_round_seconds = 0.5;
 };
 
 /// Throws std::invalid_argument naming the setting and its range.
@@ -89,6 +106,9 @@ struct PourResult {
   /// [m], and the groups of grains that touch (within 0.1 mm).
   double footprint_radius = 0.0;
   int clusters = 0;
+  /// The highest grain centre [m] at the end, and just before the first collider's removal
+  /// (a mould taken away; NaN when none is removed): whether the shape stands.
+  double top = 0.0, top_before_removal = 0.0;
 };
 
 /// Runs the scene and writes its files into `folder`.

@@ -13,6 +13,8 @@
 #include <sstream>
 
 #include "grains/cultivar.hpp"
+#include "grains/mesh_io.hpp"
+#include "grains/mesh_topology.hpp"
 
 namespace rice::experiments {
 namespace {
@@ -187,14 +189,36 @@ xpbd::ColliderKeyframe read_pose(Section& section, double time) {
   return key;
 }
 
-/// One [[colliders]] table: its shape and the sizes that shape has, its friction (by default
-/// the grains'), and where it is: one pose, or `keyframes`, a list of poses at increasing times.
-xpbd::Collider read_collider(const toml::table& table, const std::string& source, const std::string& name,
-                             const PourSettings& p) {
+/// A closed mesh file named by `key`, a path from the scene file's folder, its coordinates
+/// multiplied by `scale`.
+grains::SurfaceMesh read_mesh_file(Section& section, const std::string& key, const std::filesystem::path& folder) {
+  const toml::node* node = section.claim(key);
+  if (!node) section.fail_here("needs " + key + ", a mesh file (.obj, .off, .ply)");
+  if (!node->is_string()) section.fail(*node, key, "a file name in quotes");
+  const std::filesystem::path path = folder / *node->value<std::string>();
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error))  // not a device: the fuzz targets read names too
+    section.fail(*node, key, "a mesh file that exists (looked for " + path.string() + ")");
+  grains::SurfaceMesh mesh;
+  try {
+    mesh = grains::read_surface_mesh(path);
+    grains::require_closed_manifold(mesh, path.string());
+  } catch (const std::exception& e) {
+    section.fail(*node, key, "a closed triangle mesh: " + std::string(e.what()));
+  }
+  mesh.V *= section.number("scale", 1.0, [](double v) { return v > 0.0 && v <= 1e3; }, "a number in (0, 1e3]");
+  return mesh;
+}
+
+/// One [[colliders]] table: its shape and the sizes that shape has (a mesh: its file), its
+/// friction (by default the grains'), when it is removed, and where it is: one pose, or
+/// `keyframes`, a list of poses at increasing times. Analytic shapes go to p.colliders, meshes
+/// to p.mesh_colliders; returns the mesh's index there, or -1.
+int read_collider(const toml::table& table, const std::string& source, const std::string& name, PourSettings& p) {
   Section section(&table, source, name);
   xpbd::Collider c;
-  const std::string shape = section.choice("shape", "", {"plane", "sphere", "box", "capsule"});
-  if (shape.empty()) section.fail_here("needs a shape: 'plane', 'sphere', 'box' or 'capsule'");
+  const std::string shape = section.choice("shape", "", {"plane", "sphere", "box", "capsule", "mesh"});
+  if (shape.empty()) section.fail_here("needs a shape: 'plane', 'sphere', 'box', 'capsule' or 'mesh'");
   const auto positive = [](double v) { return v > 0.0 && v <= 10.0; };
   const auto size = [&](const std::string& key) {
     const double v = section.number(key, 0.0, positive, "a number in (0, 10]");
@@ -216,6 +240,15 @@ xpbd::Collider read_collider(const toml::table& table, const std::string& source
     c.radius = size("radius_m");
     c.half_length = size("half_length_m");
   }
+  std::optional<MeshCollider> mesh;
+  if (shape == "mesh") {
+    mesh.emplace();
+    mesh->mesh = read_mesh_file(section, "file", std::filesystem::path(source).parent_path());
+    mesh->hollow = section.flag("hollow", false);
+    mesh->grid_spacing = section.number_in("grid_spacing_m", mesh->grid_spacing, 2e-4, 1e-2);
+  }
+  c.removal_time = section.number("removed_at_s", INFINITY, [](double t) { return t > 0.0 && t <= 1e4; },
+                                  "a time in (0, 1e4] s");
   c.static_friction = section.number_in("static_friction", p.static_friction, 0.0, 10.0);
   c.dynamic_friction = section.number_in("dynamic_friction", std::min(p.dynamic_friction, c.static_friction), 0.0, 10.0);
   if (c.dynamic_friction > c.static_friction)
@@ -241,7 +274,13 @@ xpbd::Collider read_collider(const toml::table& table, const std::string& source
     }
   }
   section.finish();
-  return c;
+  if (!mesh) {
+    p.colliders.push_back(c);
+    return -1;
+  }
+  mesh->collider = c;
+  p.mesh_colliders.push_back(std::move(*mesh));
+  return static_cast<int>(p.mesh_colliders.size()) - 1;
 }
 
 }  // namespace
@@ -299,12 +338,6 @@ SceneDescription parse_scene(std::string_view text, const std::string& source, c
   p.grid_spacing = container.number_in("grid_spacing_m", p.grid_spacing, 2e-4, 1e-2);
   container.finish();
 
-  Section emitter = section("emitter");
-  emitter.choice("kind", "spout", {"spout"});
-  p.spout_height = emitter.number_in("height_m", p.spout_height, 0.0, 10.0);
-  p.spout_radius = emitter.number_in("radius_m", p.spout_radius, 0.0, 1.0);
-  p.pour_seconds = emitter.number_in("seconds", p.pour_seconds, 0.0, 1e4);
-  emitter.finish();
 
   Section effects = section("effects");
   const bool friction = effects.flag("friction", true);
@@ -320,6 +353,30 @@ SceneDescription parse_scene(std::string_view text, const std::string& source, c
   p.sleeping = effects.flag("sleeping", p.sleeping);
   p.render_meshes = effects.flag("render_meshes", p.render_meshes);
   effects.finish();
+
+  // Colliders after [effects]: their friction defaults to the grains'.
+  std::vector<int> mesh_of_collider;
+  if (const toml::array* colliders = document["colliders"].as_array())
+    for (size_t c = 0; c < colliders->size(); ++c)
+      mesh_of_collider.push_back(
+          read_collider(*(*colliders)[c].as_table(), source, "colliders." + std::to_string(c + 1), p));
+
+  Section emitter = section("emitter");
+  if (emitter.choice("kind", "spout", {"spout", "fill"}) == "fill") {
+    const long mould = emitter.integer_in("mould", 0, 1, std::max<long>(1, static_cast<long>(mesh_of_collider.size())));
+    if (mould == 0 || mould > static_cast<long>(mesh_of_collider.size()))
+      emitter.fail_here("kind = 'fill' needs mould, the number of a [[colliders]] (1 for the first)");
+    p.fill_mould = mesh_of_collider[mould - 1];
+    if (p.fill_mould < 0 || !p.mesh_colliders[p.fill_mould].hollow)
+      emitter.require(false, "mould", "the number of a [[colliders]] with shape = 'mesh' and hollow = true");
+    p.fill_round_seconds = emitter.number("round_s", p.fill_round_seconds, [](double v) { return v > 0.0 && v <= 1e3; },
+                                          "a time in (0, 1e3] s");
+  } else {
+    p.spout_height = emitter.number_in("height_m", p.spout_height, 0.0, 10.0);
+    p.spout_radius = emitter.number_in("radius_m", p.spout_radius, 0.0, 1.0);
+    p.pour_seconds = emitter.number_in("seconds", p.pour_seconds, 0.0, 1e4);
+  }
+  emitter.finish();
 
   if (document.get("render")) {
     Section render = section("render");
@@ -345,9 +402,6 @@ SceneDescription parse_scene(std::string_view text, const std::string& source, c
     scene.render = r;
   }
 
-  if (const toml::array* colliders = document["colliders"].as_array())
-    for (size_t c = 0; c < colliders->size(); ++c)
-      p.colliders.push_back(read_collider(*(*colliders)[c].as_table(), source, "colliders." + std::to_string(c + 1), p));
   return scene;
 }
 

@@ -12,20 +12,26 @@
 //   [solver]     fps, frames, substeps (0: by body kind), iterations,
 //                method ("xpbd" | "vbd"; vbd needs soft grains)
 //   [container]  kind ("chawan" | "plate"), grid_spacing_m (the chawan's distance grid)
-//   [emitter]    kind ("spout"), height_m (above the chawan's rim or the plate), radius_m
-//                (its opening; 0: the container's), seconds (over which the grains leave it;
-//                0: all at once, a clump)
+//   [emitter]    kind ("spout" | "fill"). spout: height_m (above the chawan's rim or the
+//                plate), radius_m (its opening; 0: the container's), seconds (over which the
+//                grains leave it; 0: all at once, a clump). fill: mould, the number of a hollow
+//                mesh in [[colliders]] (1 for the first), which the grains fill in rounds
+//                round_s apart (default 0.5), each at the free points of a lattice of their
+//                boxes, lowest first
 //   [effects]    friction (bool), static_friction, dynamic_friction, cohesion, sleeping,
 //                render_meshes
 //   [render]     width, height, samples_per_pixel, sun_elevation_deg, sun_azimuth_deg,
 //                sun_irradiance, sky_radiance, ground (bool), eye_m and look_at_m (both or
 //                neither; neither: framed on the grains), fov_deg; rigid grains only
 //   [[colliders]] (any number, beside the container) shape ("plane" | "sphere" | "box" |
-//                "capsule") with its sizes (radius_m; half_extents_m = [x, y, z]; radius_m and
-//                half_length_m), static_friction and dynamic_friction (default: the grains'),
-//                and its pose: position_m = [x, y, z], axis = [x, y, z], angle_deg (a plane
-//                is the solid below its local z = 0), or keyframes = [{ time_s, position_m,
-//                axis, angle_deg }, ...] at increasing times, so a hand can press and withdraw
+//                "capsule" | "mesh") with its sizes (radius_m; half_extents_m = [x, y, z];
+//                radius_m and half_length_m; a mesh: file, a closed .obj/.off/.ply from the
+//                scene file's folder, scale, hollow (the room inside, a mould), grid_spacing_m
+//                of its distance grid), static_friction and dynamic_friction (default: the
+//                grains'), removed_at_s (gone from then on: a mould taken away), and its pose:
+//                position_m = [x, y, z], axis = [x, y, z], angle_deg (a plane is the solid
+//                below its local z = 0), or keyframes = [{ time_s, position_m, axis,
+//                angle_deg }, ...] at increasing times, so a hand can press and withdraw
 //
 // Overrides (`--set section.key=value`, a TOML value) replace or add a key before reading, so
 // a short variant of a scene is the same file with fewer grains or frames.

@@ -159,6 +159,65 @@ half_length_m = 0.03
   EXPECT_TRUE(error_of("colliders = 3\n").starts_with("bad.toml:1: 'colliders' must be a list of [[colliders]] tables"));
 }
 
+TEST(SceneFile, MeshCollidersAndTheFillReadTheirFilesFromTheScenesFolder) {
+  // Paths are from the scene file's folder; the file is read, checked closed and scaled.
+  const std::string scene_path = std::string(RICE_SCENES_DIR) + "/test.toml";
+  const SceneDescription scene = parse_scene(R"([emitter]
+kind = "fill"
+mould = 2
+round_s = 0.25
+[[colliders]]
+shape = "box"
+half_extents_m = [0.01, 0.01, 0.01]
+[[colliders]]
+shape = "mesh"
+file = "meshes/shari_mould.obj"
+scale = 2
+hollow = true
+grid_spacing_m = 5e-4
+removed_at_s = 4.5
+)", scene_path);
+  ASSERT_EQ(scene.pour.mesh_colliders.size(), 1u);
+  ASSERT_EQ(scene.pour.colliders.size(), 1u);
+  const MeshCollider& mould = scene.pour.mesh_colliders[0];
+  EXPECT_TRUE(mould.hollow);
+  EXPECT_EQ(mould.grid_spacing, 5e-4);
+  EXPECT_EQ(mould.collider.removal_time, 4.5);
+  EXPECT_NEAR(mould.mesh.V.col(2).maxCoeff(), 2 * 0.04, 1e-9);  // the shari mould is 4 cm tall
+  EXPECT_EQ(scene.pour.fill_mould, 0);
+  EXPECT_EQ(scene.pour.fill_round_seconds, 0.25);
+  EXPECT_TRUE(std::isinf(scene.pour.colliders[0].removal_time));
+  EXPECT_NO_THROW(validate(scene.pour));
+
+  const auto error_at = [&](const std::string& text) {
+    try {
+      parse_scene(text, scene_path);
+    } catch (const SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string mesh = "[[colliders]]\nshape = \"mesh\"\n";
+  EXPECT_NE(error_at(mesh).find("[colliders.1] needs file"), std::string::npos) << error_at(mesh);
+  EXPECT_NE(error_at(mesh + "file = \"meshes/none.obj\"\n").find(":3: [colliders.1] file = \"meshes/none.obj\": expected a mesh file that exists"),
+            std::string::npos);
+  // An open mesh (a tetrahedron without one face) is refused naming its defect.
+  const std::filesystem::path open = std::filesystem::path(RICE_TEST_SCRATCH) / "open_mesh.obj";
+  std::ofstream(open) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n";
+  EXPECT_NE(error_at(mesh + "file = \"" + open.string() + "\"\n").find("expected a closed triangle mesh"), std::string::npos);
+  EXPECT_NE(error_at("[[colliders]]\nshape = \"box\"\nhalf_extents_m = [1, 1, 1]\nfile = \"x.obj\"\n").find("has no key 'file'"),
+            std::string::npos);
+  EXPECT_NE(error_at("[[colliders]]\nshape = \"plane\"\nremoved_at_s = 0\n").find("removed_at_s = 0: expected a time in (0, 1e4] s"),
+            std::string::npos);
+  EXPECT_NE(error_at("[emitter]\nkind = \"fill\"\n").find("[emitter] kind = 'fill' needs mould"), std::string::npos);
+  EXPECT_NE(error_at("[emitter]\nkind = \"fill\"\nmould = 1\n[[colliders]]\nshape = \"plane\"\n")
+                .find("[emitter] mould = 1: expected the number of a [[colliders]] with shape = 'mesh' and hollow = true"),
+            std::string::npos);
+  EXPECT_NE(error_at("[emitter]\nkind = \"fill\"\nmould = 1\nheight_m = 0.1\n" + mesh + "file = \"meshes/shari_mould.obj\"\nhollow = true\n")
+                .find("[emitter] has no key 'height_m'"),
+            std::string::npos);
+}
+
 TEST(SceneFile, RenderSectionSetsTheImageAndTheCamera) {
   const SceneDescription scene = parse_scene(R"([render]
 width = 320
@@ -204,6 +263,27 @@ TEST(SceneFile, RunWritesTheRunWithItsSceneAndABadSceneWritesNothing) {
   // The copy reads back as the scene it ran.
   const SceneDescription copy = read_scene_file(out / "scene.toml");
   EXPECT_EQ(copy.pour.count, 800);  // the file's own value; the overrides are listed below it
+}
+
+TEST(SceneFile, TheMouldScenesRunShortAndEveryGrainFindsRoom) {
+  // Short variants of the shari and the bunny: the fill puts every grain in the mould in its
+  // first round; grains start inside it (the highest centre below the mould's top).
+  for (const auto& [name, mould_top] : {std::pair("shari", 0.04), std::pair("bunny", 0.0497 + 0.05)}) {
+    SCOPED_TRACE(name);
+    const std::filesystem::path out = std::filesystem::path(RICE_TEST_SCRATCH) / (std::string("scene-") + name);
+    std::filesystem::remove_all(out);
+    const PourResult result = run_scene_command(
+        std::filesystem::path(RICE_SCENES_DIR) / (std::string(name) + ".toml"),
+        {"grains.count=40", "grains.variants=2", "solver.frames=3", "render.width=32", "render.height=24",
+         "render.samples_per_pixel=1"},
+        out);
+    EXPECT_GT(result.top, 0.0);
+    EXPECT_LT(result.top, mould_top);
+    std::ifstream info(out / "run_info.txt");
+    const std::string text((std::istreambuf_iterator<char>(info)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("grains_placed: 40\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("fill_rounds: 1\n"), std::string::npos) << text;
+  }
 }
 
 TEST(PileMeasures, FootprintRadiusHoldsTheFractionOfCentresAboutTheirMean) {

@@ -1,0 +1,25 @@
+// A mould filled with grains (scene files' `[emitter] kind = "fill"`): grain centres on a
+// lattice of boxes, one grain's bounding box each, inside the room of a collider (a hollow
+// mesh), lowest first. A lattice packs loosely (grains settle to well under its height), so
+// the mould is filled in rounds: each round puts grains at the lattice points that no grain
+// is near (free_points), and they settle before the next.
+#pragma once
+
+#include <vector>
+
+#include "xpbd/collider.hpp"
+
+namespace rice::experiments {
+
+/// Centres of boxes of size `cell` (x, y, z in the world) on a lattice over the collider's
+/// distance grid at its pose at time 0: the points whose box corners and centre all lie in
+/// the room (φ > 0, the centre at least half the smallest side in), layer by layer from the
+/// bottom. Throws std::invalid_argument for a collider without a grid or a cell that is not
+/// positive.
+std::vector<xpbd::Vec3> mould_lattice(const xpbd::Collider& mould, const xpbd::Vec3& cell);
+
+/// The lattice points farther than `clearance` from every centre in `occupied`, in order.
+std::vector<xpbd::Vec3> free_points(const std::vector<xpbd::Vec3>& lattice, const std::vector<xpbd::Vec3>& occupied,
+                                    double clearance);
+
+}  // namespace rice::experiments

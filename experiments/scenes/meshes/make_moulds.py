@@ -1,0 +1,72 @@
+#!/usr/bin/env python3
+"""Writes the moulds of the shipped scenes and their lids as closed OBJ prisms with rounded
+corners: onigiri_mould.obj (a rounded equilateral triangle, paper Fig. 16) and shari_mould.obj
+(a rounded oblong, Fig. 14), each standing on z = 0 in metres, and onigiri_lid.obj and
+shari_lid.obj, 1 cm thick, the same outline 2 mm in from the mould's walls (a lid as wide as
+the mould would wedge grains between itself and the walls). Rerun after changing a size:
+    python3 experiments/scenes/meshes/make_moulds.py
+"""
+import math
+import pathlib
+
+
+def rounded_outline(corners, radius, per_corner=8):
+    """Points around a convex polygon (counter-clockwise corners) with each corner rounded."""
+    n = len(corners)
+    points = []
+    for k in range(n):
+        (px, py), (cx, cy), (nx, ny) = corners[k - 1], corners[k], corners[(k + 1) % n]
+        # The arc's centre: the corner moved inward by radius / sin(half the inner angle).
+        a = math.atan2(py - cy, px - cx)
+        b = math.atan2(ny - cy, nx - cx)
+        half = ((a - b) % (2 * math.pi)) / 2
+        bisector = b + half
+        d = radius / math.sin(half)
+        ox, oy = cx + d * math.cos(bisector), cy + d * math.sin(bisector)
+        start = a + math.pi / 2  # outward normal of the incoming edge
+        end = b - math.pi / 2    # outward normal of the outgoing edge
+        sweep = (end - start) % (2 * math.pi)
+        for i in range(per_corner + 1):
+            t = start + sweep * i / per_corner
+            points.append((ox + radius * math.cos(t), oy + radius * math.sin(t)))
+    return points
+
+
+def write_prism(path, outline, height):
+    """A closed prism over the outline (counter-clockwise), faces outward."""
+    n = len(outline)
+    lines = ["# " + path.name + ": written by make_moulds.py"]
+    for z in (0.0, height):
+        lines += ["v %.6f %.6f %.6f" % (x, y, z) for x, y in outline]
+    cx = sum(x for x, _ in outline) / n
+    cy = sum(y for _, y in outline) / n
+    lines += ["v %.6f %.6f 0" % (cx, cy), "v %.6f %.6f %.6f" % (cx, cy, height)]
+    bottom_centre, top_centre = 2 * n + 1, 2 * n + 2
+    for i in range(n):
+        j = (i + 1) % n
+        a, b, c, d = i + 1, j + 1, n + j + 1, n + i + 1
+        lines += ["f %d %d %d" % (a, b, c), "f %d %d %d" % (a, c, d)]
+        lines += ["f %d %d %d" % (bottom_centre, b, a), "f %d %d %d" % (top_centre, n + i + 1, n + j + 1)]
+    path.write_text("\n".join(lines) + "\n")
+
+
+here = pathlib.Path(__file__).resolve().parent
+GAP = 0.002  # between a lid and its mould's walls [m]
+
+
+def triangle(side):
+    return [(side * math.cos(math.radians(90 + 120 * k)) / math.sqrt(3),
+             side * math.sin(math.radians(90 + 120 * k)) / math.sqrt(3)) for k in range(3)]
+
+
+def oblong(length, width):
+    return [(-length / 2, -width / 2), (length / 2, -width / 2), (length / 2, width / 2), (-length / 2, width / 2)]
+
+
+side, corner = 0.075, 0.012  # onigiri: the triangle's side and corner radius [m]
+write_prism(here / "onigiri_mould.obj", rounded_outline(triangle(side), corner), 0.05)
+# A triangle's outline moves in by GAP when its side shrinks by 2 sqrt(3) GAP.
+write_prism(here / "onigiri_lid.obj", rounded_outline(triangle(side - 2 * math.sqrt(3) * GAP), corner - GAP), 0.01)
+length, width, corner = 0.05, 0.022, 0.008  # shari: an oblong [m]
+write_prism(here / "shari_mould.obj", rounded_outline(oblong(length, width), corner), 0.04)
+write_prism(here / "shari_lid.obj", rounded_outline(oblong(length - 2 * GAP, width - 2 * GAP), corner - GAP), 0.01)

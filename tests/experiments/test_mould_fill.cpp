@@ -1,0 +1,75 @@
+// Filling a mould (experiments/mould_fill.hpp) and mesh colliders (collider_grid.hpp): a
+// hollow cube's room is its inside, every lattice box lies in it, the lattice runs from the
+// bottom up and fills the cube but for a cell's margin; free points keep their distance from
+// the grains already in.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <memory>
+
+#include "experiments/collider_grid.hpp"
+#include "experiments/mould_fill.hpp"
+
+namespace rice::experiments {
+namespace {
+
+using xpbd::Vec3;
+
+/// A closed cube of `side` [m] about the origin, faces outward.
+grains::SurfaceMesh cube(double side) {
+  grains::SurfaceMesh mesh;
+  mesh.V.resize(8, 3);
+  for (int k = 0; k < 8; ++k)
+    mesh.V.row(k) = 0.5 * side * Eigen::RowVector3d((k & 1) ? 1 : -1, (k & 2) ? 1 : -1, (k & 4) ? 1 : -1);
+  mesh.F.resize(12, 3);
+  mesh.F << 0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5;
+  return mesh;
+}
+
+xpbd::Collider mould_of(const grains::SurfaceMesh& mesh, bool hollow) {
+  xpbd::Collider c;
+  c.shape = xpbd::ColliderShape::kDistanceGrid;
+  c.grid = std::make_shared<const xpbd::DistanceGrid>(distance_grid_of(mesh, 1e-3, 0.01, hollow));
+  c.motion.front().translation = Vec3(0.0, 0.0, 0.05);  // standing on z = 0
+  return c;
+}
+
+TEST(MouldFill, AHollowCubeHoldsItsLatticeOfBoxesFromTheBottomUp) {
+  const double side = 0.1;
+  const xpbd::Collider mould = mould_of(cube(side), /*hollow=*/true);
+  // Inside a hollow mesh φ > 0 (room), outside it φ < 0 (solid).
+  EXPECT_GT(xpbd::local_signed_distance(mould, Vec3::Zero()).distance, 0.04);
+  EXPECT_LT(xpbd::local_signed_distance(mould, Vec3(0.0, 0.0, 0.053)).distance, 0.0);
+  const Vec3 cell(0.008, 0.004, 0.003);
+  const std::vector<Vec3> lattice = mould_lattice(mould, cell);
+  // Every box inside the cube (to the grid's accuracy), and the cube filled but for about a
+  // cell at each wall.
+  for (const Vec3& c : lattice) {
+    EXPECT_LE((c - Vec3(0.0, 0.0, 0.05)).cwiseAbs().maxCoeff() + 0.5 * cell.minCoeff(), 0.5 * side + 1e-3);
+    for (int axis = 0; axis < 3; ++axis)
+      EXPECT_LE(std::abs(c[axis] - (axis == 2 ? 0.05 : 0.0)) + 0.5 * cell[axis], 0.5 * side + 1e-3);
+  }
+  const double full = (side / cell.x()) * (side / cell.y()) * (side / cell.z());
+  const double margin = ((side - 2 * cell.x()) / cell.x()) * ((side - 2 * cell.y()) / cell.y()) *
+                        ((side - 2 * cell.z()) / cell.z());
+  EXPECT_LE(lattice.size(), full);
+  EXPECT_GE(lattice.size(), margin);
+  EXPECT_TRUE(std::is_sorted(lattice.begin(), lattice.end(), [](const Vec3& a, const Vec3& b) { return a.z() < b.z(); }));
+  // A solid cube's room is outside it: no lattice point inside.
+  for (const Vec3& c : mould_lattice(mould_of(cube(side), /*hollow=*/false), cell))
+    EXPECT_GT((c - Vec3(0.0, 0.0, 0.05)).cwiseAbs().maxCoeff(), 0.5 * side);
+  EXPECT_THROW(mould_lattice(xpbd::Collider{}, cell), std::invalid_argument);
+  EXPECT_THROW(mould_lattice(mould, Vec3(0.0, 1.0, 1.0)), std::invalid_argument);
+}
+
+TEST(MouldFill, FreePointsKeepTheirClearanceFromTheGrainsIn) {
+  const std::vector<Vec3> lattice{Vec3(0, 0, 0), Vec3(0.01, 0, 0), Vec3(0.02, 0, 0), Vec3(0.03, 0, 0)};
+  const std::vector<Vec3> free = free_points(lattice, {Vec3(0.001, 0, 0)}, 0.0095);
+  ASSERT_EQ(free.size(), 2u);
+  EXPECT_EQ(free[0], lattice[2]);
+  EXPECT_EQ(free[1], lattice[3]);
+  EXPECT_EQ(free_points(lattice, {}, 1.0).size(), lattice.size());
+}
+
+}  // namespace
+}  // namespace rice::experiments
