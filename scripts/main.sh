@@ -21,6 +21,8 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 ./build/experiments/rice figure 10 --out out/figure10
 ./build/experiments/rice run experiments/scenes/chawan.toml --out out/scenes/chawan
 ./build/experiments/rice run experiments/scenes/press.toml --out out/scenes/press
+./build/experiments/rice run experiments/scenes/shari.toml --out out/scenes/shari
+./build/experiments/rice run experiments/scenes/onigiri.toml --out out/scenes/onigiri
 ./build/experiments/rice figure 13 --out out/figure13
 ./build/experiments/rice study render --out out/render-study
 ./build/experiments/rice render --pour out/pour --width 1280 --height 720 --spp 64 \
