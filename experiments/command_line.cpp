@@ -30,6 +30,7 @@
 #include "experiments/contact_study.hpp"
 #include "experiments/render_command.hpp"
 #include "experiments/render_study.hpp"
+#include "experiments/table1.hpp"
 #include "experiments/water_absorption_figure.hpp"
 #include "experiments/xpbd_stiffness_study.hpp"
 #include "grains/cultivar.hpp"
@@ -143,6 +144,9 @@ struct CommandLine::Commands {
            *figure13_cmd = nullptr;
   Figure10Settings figure10;
   std::string figure10_out = "out/figure10";
+  CLI::App* table1_cmd = nullptr;
+  Table1Settings table1;
+  std::string table1_out = "out/table1";
   Figure13Settings figure13;
   std::string figure13_out = "out/figure13";
   WaterAbsorptionFigureSettings absorption;
@@ -177,6 +181,17 @@ struct CommandLine::Commands {
     add_figures();
     add_pour();
     add_run();
+    add_table();
+  }
+
+  void add_table() {
+    CLI::App* table = app.add_subcommand("table", "regenerate a table of the paper");
+    table->require_subcommand(1);
+    table1_cmd = table->add_subcommand("1", "shari, chawan, onigiri and bunny: simulation and render times beside the paper's");
+    table1_cmd->add_option("--out", table1_out, "output folder")->capture_default_str();
+    table1_cmd->add_option("--scenes", table1.scenes, "the folder of the scene files")->capture_default_str();
+    table1_cmd->add_flag("--full", table1.full, "also render each last frame at 3840x2160, 800 spp (long)");
+    table1_cmd->add_option("--set", table1.overrides, "section.key=value for every scene (repeatable)");
   }
 
   void add_run() {
@@ -628,6 +643,7 @@ void CommandLine::run() const {
   if (*c.figure9_cmd) cultivars_figure_command(c.figure_seed, c.figure9_count, c.figure9_out);
   if (*c.figure11_cmd) water_absorption_figure_command(c.absorption, c.absorption_out);
   if (*c.figure10_cmd) figure10_command(c.figure10, c.figure10_out);
+  if (*c.table1_cmd) table1_command(c.table1, c.table1_out);
   if (*c.figure13_cmd) figure13_command(c.figure13, c.figure13_out);
   if (*c.pour_cmd) pour_command(c.pour_settings(), c.pour_out);
   if (*c.run_cmd) run_scene_command(c.run_scene, c.run_overrides, c.run_out);

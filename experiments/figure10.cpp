@@ -29,7 +29,8 @@ void figure10_command(const Figure10Settings& s, const std::filesystem::path& fo
   CsvTable table({"soak_minutes", "footprint_radius_m", "clusters", "awake_at_end", "simulation_s"});
   std::vector<PourResult> results;
   for (const double minutes : s.soak_minutes) {
-    const PourResult r = run_scene_command(s.scene, overrides_for(minutes), folder / ("soak_" + cell(minutes) + "min"));
+    const PourResult r =
+        run_scene_command(s.scene, overrides_for(minutes), folder / ("soak_" + cell(minutes) + "min")).pour;
     table.add_row({cell(minutes), cell(r.footprint_radius), cell(r.clusters), cell(r.awake), cell(r.simulation_seconds)});
     results.push_back(r);
   }

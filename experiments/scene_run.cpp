@@ -1,19 +1,17 @@
 // `rice run`; see scene_run.hpp.
 #include "experiments/scene_run.hpp"
 
+#include <chrono>
 #include <cstdio>
 
 #include "experiments/output.hpp"
-#include "experiments/render_command.hpp"
-#include "experiments/scene_file.hpp"
 #include "grains/absorption_table.hpp"
 #include "grains/water_content.hpp"
 
 namespace rice::experiments {
-namespace {
 
-/// `rice render --pour` of the run's last frame, the grains at their water content.
-RenderCommandSettings render_settings(const SceneRender& r, const PourSettings& pour, const std::filesystem::path& run) {
+RenderCommandSettings scene_render_settings(const SceneRender& r, const PourSettings& pour,
+                                            const std::filesystem::path& run) {
   RenderCommandSettings s;
   s.pour = run;
   const grains::WaterContentModel water(grains::read_absorption_table(grains::default_absorption_table()));
@@ -36,9 +34,7 @@ RenderCommandSettings render_settings(const SceneRender& r, const PourSettings& 
   return s;
 }
 
-}  // namespace
-
-PourResult run_scene_command(const std::filesystem::path& scene_file, const std::vector<std::string>& overrides,
+SceneResult run_scene_command(const std::filesystem::path& scene_file, const std::vector<std::string>& overrides,
                              const std::filesystem::path& folder) {
   const std::string text = read_scene_text(scene_file);
   const SceneDescription scene = parse_scene(text, scene_file.string(), overrides);
@@ -51,8 +47,13 @@ PourResult run_scene_command(const std::filesystem::path& scene_file, const std:
   }
   write_file_atomically(folder / "scene.toml", copy);
   std::printf("scene %s: %s\n", scene.name.c_str(), scene.description.c_str());
-  const PourResult result = pour_command(scene.pour, folder);
-  if (scene.render) render_command(render_settings(*scene.render, scene.pour, folder), folder / "render");
+  SceneResult result;
+  result.pour = pour_command(scene.pour, folder);
+  if (scene.render) {
+    const auto start = std::chrono::steady_clock::now();
+    render_command(scene_render_settings(*scene.render, scene.pour, folder), folder / "render");
+    result.render_seconds = seconds_since(start);
+  }
   return result;
 }
 

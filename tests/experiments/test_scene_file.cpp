@@ -4,6 +4,7 @@
 // copy of its scene, and a bad scene writes nothing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -12,6 +13,7 @@
 #include "experiments/pile_measures.hpp"
 #include "experiments/scene_file.hpp"
 #include "experiments/scene_run.hpp"
+#include "experiments/table1.hpp"
 #include "tests/xpbd/grain_fixtures.hpp"
 
 #ifndef RICE_SCENES_DIR
@@ -276,7 +278,7 @@ TEST(SceneFile, TheMouldScenesRunShortAndEveryGrainFindsRoom) {
         std::filesystem::path(RICE_SCENES_DIR) / (std::string(name) + ".toml"),
         {"grains.count=40", "grains.variants=2", "solver.frames=3", "render.width=32", "render.height=24",
          "render.samples_per_pixel=1"},
-        out);
+        out).pour;
     EXPECT_GT(result.top, 0.0);
     EXPECT_LT(result.top, mould_top);
     std::ifstream info(out / "run_info.txt");
@@ -324,6 +326,29 @@ TEST(Figure10, RunsTheDropSceneAtEachSoakTimeAndTabulatesThePiles) {
   while (std::getline(table, line)) ++rows;
   EXPECT_EQ(rows, 3);  // header and one row per soak time
   EXPECT_TRUE(std::filesystem::exists(out / "soak_240min" / "scene.toml"));
+}
+
+TEST(Table1, RunsTheFourScenesAndSetsTheirTimesBesideThePapers) {
+  const std::filesystem::path out = std::filesystem::path(RICE_TEST_SCRATCH) / "table1";
+  std::filesystem::remove_all(out);
+  Table1Settings s;
+  s.scenes = RICE_SCENES_DIR;
+  s.overrides = {"grains.count=0"};
+  EXPECT_THROW(table1_command(s, out), SceneError);
+  EXPECT_FALSE(std::filesystem::exists(out));  // a bad scene: nothing run, nothing written
+  s.overrides = {"grains.count=12", "grains.variants=2", "solver.frames=3", "render.width=32", "render.height=24",
+                 "render.samples_per_pixel=1"};
+  table1_command(s, out);
+  std::ifstream table(out / "table1.csv");
+  std::string line;
+  std::vector<std::string> rows;
+  while (std::getline(table, line)) rows.push_back(line);
+  ASSERT_EQ(rows.size(), 5u);  // the header and shari, chawan, onigiri, bunny
+  EXPECT_TRUE(rows[1].starts_with("14,shari,12,270,3,"));
+  EXPECT_TRUE(rows[4].starts_with("17,bunny,12,3600,3,"));
+  for (const std::string& row : rows) EXPECT_EQ(std::count(row.begin(), row.end(), ','), 14) << row;
+  EXPECT_TRUE(std::filesystem::exists(out / "table1.md"));
+  EXPECT_TRUE(std::filesystem::exists(out / "onigiri" / "render" / "render.png"));
 }
 
 }  // namespace
