@@ -20,6 +20,8 @@
 #include "experiments/mould_fill.hpp"
 #include "experiments/output.hpp"
 #include "experiments/pile_measures.hpp"
+#include "experiments/pile_section.hpp"
+#include "experiments/png_image.hpp"
 #include "grains/absorption_table.hpp"
 #include "grains/chawan.hpp"
 #include "grains/collision_spheres.hpp"
@@ -347,6 +349,22 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   double top_before_removal = std::numeric_limits<double>::quiet_NaN();
   double next_round = 0.0;  // the fill's
   int fill_rounds = 0;
+  // A grain's render mesh through its embedding, from its simulation vertices now.
+  const auto render_mesh_now = [&](int g) -> grains::SurfaceMesh {
+    const grains::Grain& grain = variants[instances[g].variant].grain;
+    const xpbd::Body& body = model.bodies[g];
+    grains::Vertices simulation;
+    if (body.kind == xpbd::BodyKind::kRigid) {
+      const xpbd::RigidBody& rigid = model.rigid_bodies[body.rigid_body];
+      const xpbd::Quat q = rigid.q() * initial_orientation[body.rigid_body].conjugate();
+      simulation = ((rest_vertices[g].rowwise() - initial_centre[g].transpose()) * q.toRotationMatrix().transpose())
+                       .rowwise() +
+                   rigid.x.transpose();
+    } else {
+      simulation = model.particles.x.middleRows(body.first_particle, body.particle_count);
+    }
+    return {grains::apply_embedding(grain.embedding, simulation, grain.simulation.T), grain.render.F};
+  };
   Progress progress("pour frames", settings.frames);
   const auto simulation_start = std::chrono::steady_clock::now();
   for (int frame = 1; frame <= settings.frames; ++frame) {
@@ -393,23 +411,8 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
     std::snprintf(name, sizeof name, "frame_%04d", frame);
     write_file_atomically(folder / "frames" / (std::string(name) + ".csv"), pose_table(model, initial_orientation).text());
     if (settings.render_meshes) {
-      // Every grain's render mesh through its embedding, from its simulation vertices now.
       std::vector<grains::SurfaceMesh> meshes;
-      for (int g = 0; g < settings.count; ++g) {
-        const grains::Grain& grain = variants[instances[g].variant].grain;
-        const xpbd::Body& body = model.bodies[g];
-        grains::Vertices simulation;
-        if (body.kind == xpbd::BodyKind::kRigid) {
-          const xpbd::RigidBody& rigid = model.rigid_bodies[body.rigid_body];
-          const xpbd::Quat q = rigid.q() * initial_orientation[body.rigid_body].conjugate();
-          simulation = ((rest_vertices[g].rowwise() - initial_centre[g].transpose()) * q.toRotationMatrix().transpose())
-                           .rowwise() +
-                       rigid.x.transpose();
-        } else {
-          simulation = model.particles.x.middleRows(body.first_particle, body.particle_count);
-        }
-        meshes.push_back({grains::apply_embedding(grain.embedding, simulation, grain.simulation.T), grain.render.F});
-      }
+      for (int g = 0; g < settings.count; ++g) meshes.push_back(render_mesh_now(g));
       write_file_atomically(folder / "frames" / (std::string(name) + ".ply"),
                             [&](std::ostream& out) { grains::write_ply(out, merged(meshes)); });
     }
@@ -436,6 +439,33 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   result.footprint_radius = footprint_radius(centres);
   result.clusters = count_clusters(model, 1e-4);
   result.top = top_of_grains();
+  if (settings.fill_mould >= 0) {
+    // Paper Fig. 16 b: the pile cut at half its height, and the share of the mould's outline
+    // there that grains cover.
+    std::vector<grains::SurfaceMesh> meshes;
+    Eigen::Vector2d lower = Eigen::Vector2d::Constant(INFINITY), upper = -lower;
+    for (int g = 0; g < released; ++g) {
+      meshes.push_back(render_mesh_now(g));
+      lower = lower.cwiseMin(meshes.back().V.leftCols<2>().colwise().minCoeff().transpose());
+      upper = upper.cwiseMax(meshes.back().V.leftCols<2>().colwise().maxCoeff().transpose());
+    }
+    result.section_height = 0.5 * result.top;
+    const PileSection section = cut_pile(meshes, result.section_height, lower, upper, 1e-4);
+    const xpbd::Collider& mould = mesh_colliders[settings.fill_mould];
+    const xpbd::ColliderKeyframe pose = xpbd::collider_pose(mould, 0.0);
+    const auto in_mould = [&](const Eigen::Vector2d& p) {
+      const Vec3 world(p.x(), p.y(), result.section_height);
+      return xpbd::local_signed_distance(mould, pose.rotation.conjugate() * (world - pose.translation)).distance > 0.0;
+    };
+    result.packing_fraction = packing_fraction(section, in_mould);
+    RgbImage image(section.width, section.height);  // grains white, the mould's outline grey
+    for (int j = 0; j < section.height; ++j)
+      for (int i = 0; i < section.width; ++i) {
+        const std::uint8_t v = section.at(i, j) ? 255 : in_mould(section.centre(i, j)) ? 70 : 0;
+        image.set(i, section.height - 1 - j, v, v, v);
+      }
+    write_png(folder / "section.png", image);
+  }
   result.top_before_removal = std::isfinite(first_removal) ? top_before_removal : std::numeric_limits<double>::quiet_NaN();
   // pile.png: the grains from the top (left) and the side (right).
   const std::string top_and_side = R"(set terminal pngcairo size 1200,560
@@ -521,6 +551,8 @@ unset multiplot
                 {"footprint_radius_m", cell(result.footprint_radius)},
                 {"clusters", cell(result.clusters)},
                 {"top_centre_at_end_m", cell(result.top)},
+                {"section_height_m", settings.fill_mould >= 0 ? cell(result.section_height) : "n/a"},
+                {"packing_fraction_in_mould_outline", settings.fill_mould >= 0 ? cell(result.packing_fraction) : "n/a"},
                 {"top_centre_before_removal_m", std::isfinite(first_removal) ? cell(result.top_before_removal) : "n/a"},
                 {"penetration_between_grains_at_end_m", cell(result.penetration.between_bodies)},
                 {"penetration_into_container_at_end_m", cell(result.penetration.into_colliders)},

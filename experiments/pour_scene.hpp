@@ -6,7 +6,8 @@
 // Writes per frame the grains' transforms (rigid) or simulation positions (soft), optionally
 // their deformed render meshes, `stats.csv` (per frame: wall time, awake grains, candidate
 // pairs, contacts, bonds, penetration, kinetic energy, and the time split into broad phase,
-// narrow phase, solves and sleeping), the final pile seen from the top and the side,
+// narrow phase, solves and sleeping), the final pile seen from the top and the side, for a
+// filled mould its cut at half height (section.png, paper Fig. 16 b) and packing fraction,
 // run_info.txt, and for rendering (`rice render --pour`) the variants' render meshes
 // (variants/variant_k.ply) and grains.csv: each grain's variant, swell P, rotation R, drop
 // point and initial centre c₀, so that a frame's pose (c, q) puts render vertex p at
@@ -109,6 +110,9 @@ struct PourResult {
   /// The highest grain centre [m] at the end, and just before the first collider's removal
   /// (a mould taken away; NaN when none is removed): whether the shape stands.
   double top = 0.0, top_before_removal = 0.0;
+  /// A mould's fill (paper Fig. 16 b): the pile cut at half the top centre's height
+  /// (section.png), and the share of the mould's outline there that grains cover.
+  double section_height = 0.0, packing_fraction = 0.0;
 };
 
 /// Runs the scene and writes its files into `folder`.

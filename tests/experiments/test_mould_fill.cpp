@@ -1,14 +1,17 @@
 // Filling a mould (experiments/mould_fill.hpp) and mesh colliders (collider_grid.hpp): a
 // hollow cube's room is its inside, every lattice box lies in it, the lattice runs from the
 // bottom up and fills the cube but for a cell's margin; free points keep their distance from
-// the grains already in.
+// the grains already in. The cut through a pile (pile_section.hpp) covers a cube's square,
+// turned or not, counts overlapping meshes once and gives the packing fraction of a region.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "experiments/collider_grid.hpp"
 #include "experiments/mould_fill.hpp"
+#include "experiments/pile_section.hpp"
 
 namespace rice::experiments {
 namespace {
@@ -69,6 +72,38 @@ TEST(MouldFill, FreePointsKeepTheirClearanceFromTheGrainsIn) {
   EXPECT_EQ(free[0], lattice[2]);
   EXPECT_EQ(free[1], lattice[3]);
   EXPECT_EQ(free_points(lattice, {}, 1.0).size(), lattice.size());
+}
+
+TEST(PileSection, ACutThroughCubesCoversTheirSquaresOnce) {
+  // A 2 cm cube about the origin, and the same cube turned 45° about z and moved 3 cm along x:
+  // at z = 0 each covers 4 cm²; a third cube overlapping the first adds only its own part.
+  grains::SurfaceMesh square = cube(0.02), turned = cube(0.02), overlapping = cube(0.02);
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(M_PI / 4, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  turned.V = (turned.V * turn.transpose()).rowwise() + Eigen::RowVector3d(0.03, 0.0, 0.0);
+  overlapping.V.rowwise() += Eigen::RowVector3d(0.01, 0.0, 0.0);  // half over the first
+  const double pixel = 1e-4;
+  const PileSection section =
+      cut_pile({square, turned, overlapping}, 0.0, Eigen::Vector2d(-0.02, -0.02), Eigen::Vector2d(0.05, 0.02), pixel);
+  EXPECT_EQ(section.width, 700);
+  EXPECT_EQ(section.height, 400);
+  const double area = pixel * pixel * std::count(section.inside.begin(), section.inside.end(), 1);
+  // 4 cm² + 4 cm² + the overlapping cube's 2 cm² outside the first (the turned square's
+  // corner reaches x = 0.03 − 0.0141 < 0.02: the third cube's right half overlaps it a little).
+  const double overlap = 0.5 * std::pow(0.02 - (0.03 - 0.01 * std::sqrt(2.0)), 2) * 2.0;
+  EXPECT_NEAR(area, 4e-4 + 4e-4 + 2e-4 - overlap, 2e-6);
+  EXPECT_TRUE(section.at(200, 200));   // (0, 0): in the first cube
+  EXPECT_FALSE(section.at(50, 50));    // (−0.015, −0.015)
+  EXPECT_TRUE(section.at(500, 200));   // (0.03, 0): in the turned one
+  // The packing fraction of the square |x|, |y| < 1.5 cm: the first cube's 4 cm² and its
+  // neighbour's overlap up to x = 1.5 cm, 4 + 1 of 9 cm².
+  const double fraction = packing_fraction(
+      section, [](const Eigen::Vector2d& p) { return std::abs(p.x()) < 0.015 && std::abs(p.y()) < 0.015; });
+  EXPECT_NEAR(fraction, 5.0 / 9.0, 0.01);
+  EXPECT_TRUE(std::isnan(packing_fraction(section, [](const Eigen::Vector2d&) { return false; })));
+  // A cut above every mesh is empty; a bad pixel is refused.
+  const PileSection above = cut_pile({square}, 0.05, Eigen::Vector2d(-0.02, -0.02), Eigen::Vector2d(0.02, 0.02), pixel);
+  EXPECT_EQ(std::count(above.inside.begin(), above.inside.end(), 1), 0);
+  EXPECT_THROW(cut_pile({square}, 0.0, Eigen::Vector2d::Zero(), Eigen::Vector2d::Ones(), 0.0), std::invalid_argument);
 }
 
 }  // namespace
