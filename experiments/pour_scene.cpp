@@ -201,19 +201,20 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   Vec3 fill_cell = Vec3::Zero();
   if (settings.fill_mould >= 0) {
     // Each grain along the world's axes (turned end over end or not), in a cell of the largest
-    // grain's box; each is built at the lowest point and moved to its own when released.
+    // grain's box; each is built at a lattice point (parked apart from the others: a
+    // "layer" is one lattice's worth) and moved to its own when released.
     Vec3 box = Vec3::Zero();
     for (const Variant& v : variants)
       box = box.cwiseMax((v.grain.simulation.V.colwise().maxCoeff() - v.grain.simulation.V.colwise().minCoeff()).transpose());
     fill_cell = 1.05 * recipe.cultivar.swell_max * box;
     lattice = mould_lattice(mesh_colliders[settings.fill_mould], fill_cell);
     if (lattice.empty()) throw std::invalid_argument("fill: not one grain fits in the mould");
-    drops.assign(settings.count, lattice.front());
+    for (int g = 0; g < settings.count; ++g) drops.push_back(lattice[g % lattice.size()]);
     const std::array<Eigen::Quaterniond, 4> turns{
         Eigen::Quaterniond::Identity(), Eigen::Quaterniond(0.0, 1.0, 0.0, 0.0), Eigen::Quaterniond(0.0, 0.0, 1.0, 0.0),
         Eigen::Quaterniond(0.0, 0.0, 0.0, 1.0)};
     for (int g = 0; g < settings.count; ++g) instances[g].rotation = turns[g % 4];
-    per_layer = settings.count;
+    per_layer = static_cast<int>(lattice.size());
   } else {
     drops = spout_positions(settings.count, 1.05 * longest, spout_radius,
                             settings.spout_height + (plate ? 0.0 : bowl_shape.height), &per_layer);
@@ -382,6 +383,9 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
         }
         next_round = solver.time() + settings.fill_round_seconds;
         ++fill_rounds;
+        if (released < settings.count && solver.time() + settings.fill_round_seconds >= mould_removal)
+          std::printf("fill: %d of %d grains found no room in the mould before it is taken away\n",
+                      settings.count - released, settings.count);
       }
     } else {
       const int due = settings.pour_seconds > 0.0
@@ -436,7 +440,8 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   result.awake = static_cast<int>(
       std::count_if(model.bodies.begin(), model.bodies.end(), [](const xpbd::Body& b) { return !b.asleep; }));
   result.penetration = xpbd::deepest_penetration(model, solver.time());
-  result.footprint_radius = footprint_radius(centres);
+  // Grains a fill found no room for stay parked, far away: left out of the footprint.
+  result.footprint_radius = footprint_radius({centres.begin(), centres.begin() + released});
   result.clusters = count_clusters(model, 1e-4);
   result.top = top_of_grains();
   if (settings.fill_mould >= 0) {
