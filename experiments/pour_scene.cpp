@@ -84,21 +84,24 @@ grains::SurfaceMesh merged(const std::vector<grains::SurfaceMesh>& parts) {
 
 /// Each grain's pose: rigid, its centre and its rotation since the start (world =
 /// q (p₀ − c₀) + c); soft, its simulation vertices.
-CsvTable pose_table(const xpbd::Model& model, const std::vector<xpbd::Quat>& initial_orientation) {
+/// Every grain's pose; `in_scene` is 0 for the grains still parked far away (not yet poured,
+/// or a fill found no room for them), which a render leaves out.
+CsvTable pose_table(const xpbd::Model& model, const std::vector<xpbd::Quat>& initial_orientation, int released) {
   const bool rigid = !model.bodies.empty() && model.bodies.front().kind == xpbd::BodyKind::kRigid;
-  CsvTable poses(rigid ? std::vector<std::string>{"grain", "x", "y", "z", "qw", "qx", "qy", "qz"}
-                       : std::vector<std::string>{"grain", "vertex", "x", "y", "z"});
+  CsvTable poses(rigid ? std::vector<std::string>{"grain", "x", "y", "z", "qw", "qx", "qy", "qz", "in_scene"}
+                       : std::vector<std::string>{"grain", "vertex", "x", "y", "z", "in_scene"});
   for (size_t g = 0; g < model.bodies.size(); ++g) {
     const xpbd::Body& body = model.bodies[g];
+    const std::string in_scene = static_cast<int>(g) < released ? "1" : "0";
     if (body.kind == xpbd::BodyKind::kRigid) {
       const xpbd::RigidBody& r = model.rigid_bodies[body.rigid_body];
       const xpbd::Quat q = r.q() * initial_orientation[body.rigid_body].conjugate();
       poses.add_row({cell(static_cast<long>(g)), cell(r.x.x()), cell(r.x.y()), cell(r.x.z()), cell(q.w()), cell(q.x()),
-                     cell(q.y()), cell(q.z())});
+                     cell(q.y()), cell(q.z()), in_scene});
     } else {
       for (int v = 0; v < body.particle_count; ++v) {
         const auto x = model.particles.x.row(body.first_particle + v);
-        poses.add_row({cell(static_cast<long>(g)), cell(v), cell(x(0)), cell(x(1)), cell(x(2))});
+        poses.add_row({cell(static_cast<long>(g)), cell(v), cell(x(0)), cell(x(1)), cell(x(2)), in_scene});
       }
     }
   }
@@ -383,9 +386,6 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
         }
         next_round = solver.time() + settings.fill_round_seconds;
         ++fill_rounds;
-        if (released < settings.count && solver.time() + settings.fill_round_seconds >= mould_removal)
-          std::printf("fill: %d of %d grains found no room in the mould before it is taken away\n",
-                      settings.count - released, settings.count);
       }
     } else {
       const int due = settings.pour_seconds > 0.0
@@ -413,7 +413,7 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
                    cell(t.narrow_phase), cell(t.solve()), cell(t.sleeping)});
     char name[32];
     std::snprintf(name, sizeof name, "frame_%04d", frame);
-    write_file_atomically(folder / "frames" / (std::string(name) + ".csv"), pose_table(model, initial_orientation).text());
+    write_file_atomically(folder / "frames" / (std::string(name) + ".csv"), pose_table(model, initial_orientation, released).text());
     if (settings.render_meshes) {
       std::vector<grains::SurfaceMesh> meshes;
       for (int g = 0; g < settings.count; ++g) meshes.push_back(render_mesh_now(g));
@@ -425,6 +425,9 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   }
   progress.finish();
   const double simulation_seconds = seconds_since(simulation_start);
+  if (settings.fill_mould >= 0 && released < settings.count)
+    std::printf("fill: %d of %d grains found no room in the mould (they stay parked, out of the measures)\n",
+                settings.count - released, settings.count);
   write_file_atomically(folder / "stats.csv", stats.text());
 
   CsvTable final_centres({"grain", "x", "y", "z", "r"});

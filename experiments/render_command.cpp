@@ -80,9 +80,11 @@ void add_pour_grains(shading::RenderScene& scene, const std::filesystem::path& p
   const auto col = [&](const NumericCsv& csv, const std::vector<double>& row, const char* name) {
     return row[csv.column(name)];
   };
+  const bool marked = std::find(poses.columns.begin(), poses.columns.end(), "in_scene") != poses.columns.end();
   for (size_t g = 0; g < grains_csv.rows.size(); ++g) {
     const auto& a = grains_csv.rows[g];
     const auto& b = poses.rows[g];
+    if (marked && col(poses, b, "in_scene") == 0.0) continue;  // still parked far away
     const int variant = static_cast<int>(col(grains_csv, a, "variant"));
     if (variant < 0 || variant >= static_cast<int>(prototype.size()))
       throw std::runtime_error("render: " + (pour / "grains.csv").string() + ": grain " + std::to_string(g) +
