@@ -83,9 +83,9 @@ grains::SurfaceMesh merged(const std::vector<grains::SurfaceMesh>& parts) {
 }
 
 /// Each grain's pose: rigid, its centre and its rotation since the start (world =
-/// q (p₀ − c₀) + c); soft, its simulation vertices.
-/// Every grain's pose; `in_scene` is 0 for the grains still parked far away (not yet poured,
-/// or a fill found no room for them), which a render leaves out.
+/// q (p₀ − c₀) + c); soft, its simulation vertices. `in_scene` is 0 for the grains still
+/// parked far away (not yet poured, or a fill found no room for them), which a render leaves
+/// out.
 CsvTable pose_table(const xpbd::Model& model, const std::vector<xpbd::Quat>& initial_orientation, int released) {
   const bool rigid = !model.bodies.empty() && model.bodies.front().kind == xpbd::BodyKind::kRigid;
   CsvTable poses(rigid ? std::vector<std::string>{"grain", "x", "y", "z", "qw", "qx", "qy", "qz", "in_scene"}
