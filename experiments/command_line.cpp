@@ -30,6 +30,7 @@
 #include "experiments/contact_study.hpp"
 #include "experiments/render_command.hpp"
 #include "experiments/render_study.hpp"
+#include "experiments/reproduce.hpp"
 #include "experiments/table1.hpp"
 #include "experiments/water_absorption_figure.hpp"
 #include "experiments/xpbd_stiffness_study.hpp"
@@ -144,6 +145,9 @@ struct CommandLine::Commands {
            *figure13_cmd = nullptr;
   Figure10Settings figure10;
   std::string figure10_out = "out/figure10";
+  CLI::App* reproduce_cmd = nullptr;
+  ReproduceSettings reproduce;
+  std::string reproduce_out = "out";
   CLI::App* table1_cmd = nullptr;
   Table1Settings table1;
   std::string table1_out = "out/table1";
@@ -182,6 +186,15 @@ struct CommandLine::Commands {
     add_pour();
     add_run();
     add_table();
+    add_reproduce();
+  }
+
+  void add_reproduce() {
+    reproduce_cmd = app.add_subcommand("reproduce", "every figure, table and study into out/, with out/index.md");
+    reproduce_cmd->add_option("--out", reproduce_out, "output folder")->capture_default_str();
+    reproduce_cmd->add_flag("--full", reproduce.full, "the paper's settings where a command has them (long)");
+    reproduce_cmd->add_flag("--force", reproduce.force, "rerun the steps that are up to date too");
+    reproduce_cmd->add_option("--only", reproduce.only, "run only these steps (their folders' names)");
   }
 
   void add_table() {
@@ -620,6 +633,7 @@ void CommandLine::validate() const {
   if (*c.grains_cmd) experiments::validate(c.grain_library_settings());
   if (*c.figure11_cmd) experiments::validate(c.absorption);
   if (*c.figure10_cmd) experiments::validate(c.figure10);
+  if (*c.reproduce_cmd) experiments::validate(c.reproduce);
   if (*c.figure13_cmd) experiments::validate(c.figure13);
   if (*c.pour_cmd) experiments::validate(c.pour_settings());
   if (*c.run_cmd) experiments::validate(read_scene_file(c.run_scene, c.run_overrides).pour);
@@ -644,6 +658,14 @@ void CommandLine::run() const {
   if (*c.figure11_cmd) water_absorption_figure_command(c.absorption, c.absorption_out);
   if (*c.figure10_cmd) figure10_command(c.figure10, c.figure10_out);
   if (*c.table1_cmd) table1_command(c.table1, c.table1_out);
+  if (*c.reproduce_cmd)
+    reproduce_command(c.reproduce, c.reproduce_out, [](const std::vector<std::string>& arguments) {
+      std::vector<std::string> words{"rice"};
+      words.insert(words.end(), arguments.begin(), arguments.end());
+      std::vector<char*> argv;
+      for (std::string& w : words) argv.push_back(w.data());
+      return run_command_line(static_cast<int>(argv.size()), argv.data());
+    });
   if (*c.figure13_cmd) figure13_command(c.figure13, c.figure13_out);
   if (*c.pour_cmd) pour_command(c.pour_settings(), c.pour_out);
   if (*c.run_cmd) run_scene_command(c.run_scene, c.run_overrides, c.run_out);
