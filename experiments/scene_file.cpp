@@ -338,7 +338,6 @@ SceneDescription parse_scene(std::string_view text, const std::string& source, c
   p.grid_spacing = container.number_in("grid_spacing_m", p.grid_spacing, 2e-4, 1e-2);
   container.finish();
 
-
   Section effects = section("effects");
   const bool friction = effects.flag("friction", true);
   p.static_friction = effects.number_in("static_friction", p.static_friction, 0.0, 10.0);
