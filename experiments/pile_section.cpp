@@ -62,15 +62,37 @@ PileSection cut_pile(const std::vector<grains::SurfaceMesh>& grains, double heig
   return section;
 }
 
-double packing_fraction(const PileSection& section, const std::function<bool(const Eigen::Vector2d&)>& in_region) {
-  long region = 0, covered = 0;
-  for (int j = 0; j < section.height; ++j)
-    for (int i = 0; i < section.width; ++i)
-      if (in_region(section.centre(i, j))) {
-        ++region;
-        covered += section.at(i, j);
-      }
-  return region > 0 ? double(covered) / double(region) : std::numeric_limits<double>::quiet_NaN();
+std::vector<char> region_around(const PileSection& section, const std::function<bool(const Eigen::Vector2d&)>& open,
+                                const Eigen::Vector2d& seed) {
+  std::vector<char> region(section.inside.size(), 0);
+  const Eigen::Vector2d at = (seed - section.lower) / section.pixel;
+  const int i0 = static_cast<int>(std::floor(at.x())), j0 = static_cast<int>(std::floor(at.y()));
+  if (i0 < 0 || j0 < 0 || i0 >= section.width || j0 >= section.height || !open(section.centre(i0, j0))) return region;
+  std::vector<std::pair<int, int>> stack{{i0, j0}};  // flood fill, depth first
+  region[static_cast<size_t>(j0) * section.width + i0] = 1;
+  while (!stack.empty()) {
+    const auto [i, j] = stack.back();
+    stack.pop_back();
+    for (const auto& [di, dj] : {std::pair(1, 0), std::pair(-1, 0), std::pair(0, 1), std::pair(0, -1)}) {
+      const int ni = i + di, nj = j + dj;
+      if (ni < 0 || nj < 0 || ni >= section.width || nj >= section.height) continue;
+      char& seen = region[static_cast<size_t>(nj) * section.width + ni];
+      if (seen || !open(section.centre(ni, nj))) continue;
+      seen = 1;
+      stack.push_back({ni, nj});
+    }
+  }
+  return region;
+}
+
+double packing_fraction(const PileSection& section, const std::vector<char>& region) {
+  long pixels = 0, covered = 0;
+  for (size_t k = 0; k < region.size(); ++k)
+    if (region[k]) {
+      ++pixels;
+      covered += section.inside[k];
+    }
+  return pixels > 0 ? double(covered) / double(pixels) : std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace rice::experiments

@@ -2,8 +2,8 @@
 // which points of the plane z = height lie inside a grain, from the grains' closed render
 // meshes (each triangle cut by the plane gives a segment; along each row of pixels, the
 // crossings of one grain's segments pair up, even–odd, into the spans inside it), and the
-// packing fraction: the share of a region of the plane (the mould's outline) that grains
-// cover.
+// packing fraction: the share of a container's room in that plane (a mould's outline, the
+// inside of a bowl) that grains cover.
 #pragma once
 
 #include <Eigen/Core>
@@ -29,8 +29,14 @@ struct PileSection {
 PileSection cut_pile(const std::vector<grains::SurfaceMesh>& grains, double height, const Eigen::Vector2d& lower,
                      const Eigen::Vector2d& upper, double pixel);
 
-/// The share of the pixels for which `in_region` (a point of the plane) holds that lie in a
-/// grain; NaN when the region holds no pixel centre.
-double packing_fraction(const PileSection& section, const std::function<bool(const Eigen::Vector2d&)>& in_region);
+/// The pixels (a mask like `inside`) reachable from the one holding `seed` through pixels
+/// whose centres `open` holds, stepping to the four neighbours: a container's room in the cut
+/// without the open space beyond its walls. Empty of pixels when the seed's is not open or
+/// lies outside the section.
+std::vector<char> region_around(const PileSection& section, const std::function<bool(const Eigen::Vector2d&)>& open,
+                                const Eigen::Vector2d& seed);
+
+/// The share of the region's pixels that lie in a grain; NaN for an empty region.
+double packing_fraction(const PileSection& section, const std::vector<char>& region);
 
 }  // namespace rice::experiments

@@ -143,6 +143,7 @@ void validate(const PourSettings& s) {
           "need 0 <= --dynamic-friction <= --static-friction <= 10, got " + cell(s.dynamic_friction) + " and " +
               cell(s.static_friction));
   require(s.grid_spacing >= 2e-4 && s.grid_spacing <= 1e-2, "--grid-spacing must be in [2e-4, 1e-2] m");
+  require(s.chawan_scale >= 0.1 && s.chawan_scale <= 10.0, "the chawan's scale must be in [0.1, 10]");
   require(s.pour_seconds >= 0.0 && s.pour_seconds <= 1e4, "--pour-seconds must be in [0, 1e4]");
   require(s.spout_height >= 0.0 && s.spout_height <= 10.0, "--spout-height must be in [0, 10] m");
   require(s.spout_radius >= 0.0 && s.spout_radius <= 1.0, "--spout-radius must be in [0, 1] m (0: the container's)");
@@ -169,7 +170,10 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   validate(settings);
   const auto start = std::chrono::steady_clock::now();
   const bool plate = settings.container == Container::kPlate;
-  const grains::ChawanShape bowl_shape;
+  grains::ChawanShape bowl_shape;
+  for (double* size : {&bowl_shape.rim_radius, &bowl_shape.height, &bowl_shape.inner_depth, &bowl_shape.wall_thickness,
+                       &bowl_shape.foot_radius, &bowl_shape.foot_height})
+    *size *= settings.chawan_scale;
 
   // Grains: variants, their spheres, then instances placed on a lattice above the bowl.
   grains::GrainRecipe recipe;
@@ -447,29 +451,39 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   result.footprint_radius = footprint_radius({centres.begin(), centres.begin() + released});
   result.clusters = count_clusters(model, 1e-4);
   result.top = top_of_grains();
-  if (settings.fill_mould >= 0) {
-    // Paper Fig. 16 b: the pile cut at half its height, and the share of the mould's outline
-    // there that grains cover.
+  // Paper Fig. 16 b (a mould's fill) and the chawan's packing (Fig. 15): the pile cut half way
+  // up from the room's floor, and the share of the room there that grains cover (the room: the
+  // pixels outside the container's solid that connect to the one under the grains' mean centre).
+  const xpbd::Collider* container_room =
+      settings.fill_mould >= 0 ? &mesh_colliders[settings.fill_mould] : plate ? nullptr : &model.colliders.front();
+  if (container_room && released > 0) {
     std::vector<grains::SurfaceMesh> meshes;
-    Eigen::Vector2d lower = Eigen::Vector2d::Constant(INFINITY), upper = -lower;
+    Eigen::Vector2d lower = Eigen::Vector2d::Constant(INFINITY), upper = -lower, mean = Eigen::Vector2d::Zero();
     for (int g = 0; g < released; ++g) {
       meshes.push_back(render_mesh_now(g));
       lower = lower.cwiseMin(meshes.back().V.leftCols<2>().colwise().minCoeff().transpose());
       upper = upper.cwiseMax(meshes.back().V.leftCols<2>().colwise().maxCoeff().transpose());
+      mean += centres[g].head<2>() / released;
     }
-    result.section_height = 0.5 * result.top;
+    if (!plate && settings.fill_mould < 0) {  // the whole bowl in the picture
+      lower = lower.cwiseMin(Eigen::Vector2d::Constant(-bowl_shape.rim_radius));
+      upper = upper.cwiseMax(Eigen::Vector2d::Constant(bowl_shape.rim_radius));
+    }
+    const double floor = settings.fill_mould >= 0 ? 0.0 : bowl_shape.height - bowl_shape.inner_depth;
+    result.section_height = 0.5 * (floor + result.top);
     const PileSection section = cut_pile(meshes, result.section_height, lower, upper, 1e-4);
-    const xpbd::Collider& mould = mesh_colliders[settings.fill_mould];
-    const xpbd::ColliderKeyframe pose = xpbd::collider_pose(mould, 0.0);
-    const auto in_mould = [&](const Eigen::Vector2d& p) {
-      const Vec3 world(p.x(), p.y(), result.section_height);
-      return xpbd::local_signed_distance(mould, pose.rotation.conjugate() * (world - pose.translation)).distance > 0.0;
+    const xpbd::ColliderKeyframe pose = xpbd::collider_pose(*container_room, 0.0);
+    const auto in_room = [&](const Eigen::Vector2d& p) {
+      const Vec3 local = pose.rotation.conjugate() * (Vec3(p.x(), p.y(), result.section_height) - pose.translation);
+      return xpbd::local_signed_distance(*container_room, local).distance > 0.0;
     };
-    result.packing_fraction = packing_fraction(section, in_mould);
-    RgbImage image(section.width, section.height);  // grains white, the mould's outline grey
+    const std::vector<char> room = region_around(section, in_room, mean);
+    result.packing_fraction = packing_fraction(section, room);
+    RgbImage image(section.width, section.height);  // grains white, the room grey, the rest black
     for (int j = 0; j < section.height; ++j)
       for (int i = 0; i < section.width; ++i) {
-        const std::uint8_t v = section.at(i, j) ? 255 : in_mould(section.centre(i, j)) ? 70 : 0;
+        const size_t k = static_cast<size_t>(j) * section.width + i;
+        const std::uint8_t v = section.inside[k] ? 255 : room[k] ? 70 : 0;
         image.set(i, section.height - 1 - j, v, v, v);
       }
     write_png(folder / "section.png", image);
@@ -553,14 +567,15 @@ unset multiplot
       folder / "run_info.txt",
       run_info({{"command", "pour"},
                 {"container", plate ? "plate" : "chawan"},
+                {"chawan_scale", cell(settings.chawan_scale)},
                 {"angle_of_repose_deg", fitted ? cell(result.angle_of_repose_degrees) : "n/a"},
                 {"heap_height_m", fitted ? cell(result.heap_height) : "n/a"},
                 {"awake_at_end", cell(result.awake)},
                 {"footprint_radius_m", cell(result.footprint_radius)},
                 {"clusters", cell(result.clusters)},
                 {"top_centre_at_end_m", cell(result.top)},
-                {"section_height_m", settings.fill_mould >= 0 ? cell(result.section_height) : "n/a"},
-                {"packing_fraction_in_mould_outline", settings.fill_mould >= 0 ? cell(result.packing_fraction) : "n/a"},
+                {"section_height_m", container_room ? cell(result.section_height) : "n/a"},
+                {"packing_fraction_in_room_at_section", container_room ? cell(result.packing_fraction) : "n/a"},
                 {"top_centre_before_removal_m", std::isfinite(first_removal) ? cell(result.top_before_removal) : "n/a"},
                 {"penetration_between_grains_at_end_m", cell(result.penetration.between_bodies)},
                 {"penetration_into_container_at_end_m", cell(result.penetration.into_colliders)},

@@ -78,6 +78,9 @@ struct PourSettings {
   bool sleeping = true;
   bool render_meshes = false;  ///< also write each frame's deformed render meshes (large)
   double grid_spacing = 1e-3;  ///< chawan distance grid [m]
+  /// The chawan's sizes times this (1: a rice bowl 12 cm across; 800 grains only cover its
+  /// bottom, 0.5 heaps them).
+  double chawan_scale = 1.0;
   std::uint64_t seed = 1;
   /// More colliders beside the container (scene files): planes, spheres, boxes and capsules,
   /// each with its keyframed motion, so a hand or a mould can press and withdraw.
@@ -110,8 +113,9 @@ struct PourResult {
   /// The highest grain centre [m] at the end, and just before the first collider's removal
   /// (a mould taken away; NaN when none is removed): whether the shape stands.
   double top = 0.0, top_before_removal = 0.0;
-  /// A mould's fill (paper Fig. 16 b): the pile cut at half the top centre's height
-  /// (section.png), and the share of the mould's outline there that grains cover.
+  /// A mould's fill or the chawan (paper Fig. 16 b, Fig. 15): the pile cut half way from the
+  /// room's floor to the top centre (section.png), and the share of the room there that grains
+  /// cover.
   double section_height = 0.0, packing_fraction = 0.0;
 };
 

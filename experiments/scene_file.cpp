@@ -336,6 +336,7 @@ SceneDescription parse_scene(std::string_view text, const std::string& source, c
   p.container = container.choice("kind", "chawan", {"chawan", "plate"}) == "plate" ? Container::kPlate
                                                                                    : Container::kChawan;
   p.grid_spacing = container.number_in("grid_spacing_m", p.grid_spacing, 2e-4, 1e-2);
+  p.chawan_scale = container.number_in("scale", p.chawan_scale, 0.1, 10.0);
   container.finish();
 
   Section effects = section("effects");

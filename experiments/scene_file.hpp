@@ -11,7 +11,8 @@
 //                soak_minutes, soak_temperature_c
 //   [solver]     fps, frames, substeps (0: by body kind), iterations,
 //                method ("xpbd" | "vbd"; vbd needs soft grains)
-//   [container]  kind ("chawan" | "plate"), grid_spacing_m (the chawan's distance grid)
+//   [container]  kind ("chawan" | "plate"), grid_spacing_m (the chawan's distance grid),
+//                scale (the chawan's sizes times this; 1: 12 cm across)
 //   [emitter]    kind ("spout" | "fill"). spout: height_m (above the chawan's rim or the
 //                plate), radius_m (its opening; 0: the container's), seconds (over which the
 //                grains leave it; 0: all at once, a clump). fill: mould, the number of a hollow

@@ -96,10 +96,19 @@ TEST(PileSection, ACutThroughCubesCoversTheirSquaresOnce) {
   EXPECT_TRUE(section.at(500, 200));   // (0.03, 0): in the turned one
   // The packing fraction of the square |x|, |y| < 1.5 cm: the first cube's 4 cm² and its
   // neighbour's overlap up to x = 1.5 cm, 4 + 1 of 9 cm².
-  const double fraction = packing_fraction(
-      section, [](const Eigen::Vector2d& p) { return std::abs(p.x()) < 0.015 && std::abs(p.y()) < 0.015; });
-  EXPECT_NEAR(fraction, 5.0 / 9.0, 0.01);
-  EXPECT_TRUE(std::isnan(packing_fraction(section, [](const Eigen::Vector2d&) { return false; })));
+  // The region grows from its seed and stops at the square's edges (a wall beyond it, at
+  // |x| = 1.6 cm, is not reached: the ring between is closed).
+  const auto square_and_ring = [](const Eigen::Vector2d& p) {
+    const double r = p.cwiseAbs().maxCoeff();
+    return r < 0.015 || (r > 0.016 && r < 0.018);
+  };
+  const std::vector<char> region = region_around(section, square_and_ring, Eigen::Vector2d::Zero());
+  EXPECT_NEAR(pixel * pixel * std::count(region.begin(), region.end(), 1), 9e-4, 1e-6);
+  EXPECT_NEAR(packing_fraction(section, region), 5.0 / 9.0, 0.01);
+  EXPECT_EQ(std::count(region_around(section, square_and_ring, Eigen::Vector2d(0.0155, 0.0)).begin(),
+                       region_around(section, square_and_ring, Eigen::Vector2d(0.0155, 0.0)).end(), 1),
+            0);  // a seed in the closed gap
+  EXPECT_TRUE(std::isnan(packing_fraction(section, std::vector<char>(section.inside.size(), 0))));
   // A cut above every mesh is empty; a bad pixel is refused.
   const PileSection above = cut_pile({square}, 0.05, Eigen::Vector2d(-0.02, -0.02), Eigen::Vector2d(0.02, 0.02), pixel);
   EXPECT_EQ(std::count(above.inside.begin(), above.inside.end(), 1), 0);
