@@ -55,43 +55,43 @@ std::vector<std::filesystem::path> files_of(const std::filesystem::path& folder,
 }  // namespace
 
 std::vector<ReproduceStep> reproduce_steps(const std::filesystem::path& out, bool full) {
-  const std::vector<std::pair<std::string, std::vector<std::string>>> steps{
-      {"XPBD stiffness: compliance against the analytic stiffness", {"study", "xpbd-stiffness"}},
-      {"Damped oscillator: XPBD and the reference against the analytic decay", {"study", "oscillator"}},
-      {"Convergence: XPBD, XPBD with primal correction and VBD against backward Euler", {"study", "convergence"}},
-      {"Fig. 8: japonica grains of different sizes", {"figure", "8"}},
-      {"Fig. 9: three cultivars and their dimensions", {"figure", "9"}},
-      {"Fig. 11: water absorption and damping against soak time", {"figure", "11"}},
-      {"A grain library (10 japonica grains)", {"grains", "--cultivar", "japonica", "--count", "10"}},
-      {"800 grains poured into a chawan", {"pour"}},
+  // Each step: its title, its command (--out added below), its folder and the step it reads.
+  const std::vector<ReproduceStep> steps{
+      {"XPBD stiffness: compliance against the analytic stiffness", {"study", "xpbd-stiffness"}, "xpbd-stiffness", ""},
+      {"Damped oscillator: XPBD and the reference against the analytic decay", {"study", "oscillator"}, "oscillator", ""},
+      {"Convergence: XPBD, XPBD with primal correction and VBD against backward Euler", {"study", "convergence"},
+       "convergence", ""},
+      {"Fig. 8: japonica grains of different sizes", {"figure", "8"}, "figure8", ""},
+      {"Fig. 9: three cultivars and their dimensions", {"figure", "9"}, "figure9", ""},
+      {"Fig. 11: water absorption and damping against soak time", {"figure", "11"}, "figure11", ""},
+      {"A grain library (10 japonica grains)", {"grains", "--cultivar", "japonica", "--count", "10"}, "grains", ""},
+      {"800 grains poured into a chawan", {"pour"}, "pour", ""},
       {"A heap on a plate, with cohesion",
        {"pour", "--container", "plate", "--count", "400", "--frames", "180", "--pour-seconds", "3.5", "--spout-height",
-        "0.05"}},
+        "0.05"},
+       "heap", ""},
       {"A heap on a plate, without cohesion",
        {"pour", "--container", "plate", "--count", "400", "--frames", "180", "--pour-seconds", "3.5", "--spout-height",
-        "0.05", "--no-cohesion"}},
-      {"Pour: penetration and time against substeps", {"study", "pour-substeps"}},
-      {"One grain: error and time against substeps, XPBD and VBD", {"study", "grain-substeps"}},
-      {"Contact: Hertz, a grain on the ground, two grains pressed together", {"study", "contact"}},
-      {"CDRF: the fit against the random-walk reference", {"study", "cdrf"}},
-      {"Fig. 10: a clump dropped after three soak times", {"figure", "10"}},
+        "0.05", "--no-cohesion"},
+       "heap-dry", ""},
+      {"Pour: penetration and time against substeps", {"study", "pour-substeps"}, "pour-substeps", ""},
+      {"One grain: error and time against substeps, XPBD and VBD", {"study", "grain-substeps"}, "grain-substeps", ""},
+      {"Contact: Hertz, a grain on the ground, two grains pressed together", {"study", "contact"}, "contact", ""},
+      {"CDRF: the fit against the random-walk reference", {"study", "cdrf"}, "cdrf", ""},
+      {"Fig. 10: a clump dropped after three soak times", {"figure", "10"}, "figure10", ""},
       {"Table 1 and Figs. 14-17: shari, chawan, onigiri, bunny",
-       full ? std::vector<std::string>{"table", "1", "--full"} : std::vector<std::string>{"table", "1"}},
-      {"A box pressing a clump of grains (scene file)", {"run", "experiments/scenes/press.toml"}},
-      {"Fig. 13: grains soaked for five times, rendered with the CDRF", {"figure", "13"}},
-      {"Rendering: error against time for the samplers", {"study", "render"}},
+       full ? std::vector<std::string>{"table", "1", "--full"} : std::vector<std::string>{"table", "1"}, "table1", ""},
+      {"A box pressing a clump of grains (scene file)", {"run", "experiments/scenes/press.toml"}, "press", ""},
+      {"Fig. 13: grains soaked for five times, rendered with the CDRF", {"figure", "13"}, "figure13", ""},
+      {"Rendering: error against time for the samplers", {"study", "render"}, "render-study", ""},
       {"The chawan pour's last frame, 1280 x 720 at 64 spp",
        {"render", "--pour", (out / "pour").string(), "--width", "1280", "--height", "720", "--spp", "64", "--eye", "0",
-        "-0.12", "0.16", "--look-at", "0", "0", "0.03", "--fov", "35"}},
+        "-0.12", "0.16", "--look-at", "0", "0", "0.03", "--fov", "35"},
+       "render-pour", "pour"},
   };
-  const std::vector<std::string> folders{"xpbd-stiffness", "oscillator", "convergence", "figure8",  "figure9",
-                                         "figure11",       "grains",     "pour",        "heap",     "heap-dry",
-                                         "pour-substeps",  "grain-substeps", "contact", "cdrf",     "figure10",
-                                         "table1",         "press",      "figure13",    "render-study",
-                                         "render-pour"};
   std::vector<ReproduceStep> result;
-  for (size_t k = 0; k < steps.size(); ++k) {
-    ReproduceStep step{steps[k].first, steps[k].second, out / folders[k], folders[k] == "render-pour" ? "pour" : ""};
+  for (ReproduceStep step : steps) {
+    step.folder = out / step.folder;
     step.arguments.push_back("--out");
     step.arguments.push_back(step.folder.string());
     result.push_back(std::move(step));
