@@ -195,6 +195,8 @@ struct CommandLine::Commands {
     reproduce_cmd->add_flag("--full", reproduce.full, "the paper's settings where a command has them (long)");
     reproduce_cmd->add_flag("--force", reproduce.force, "rerun the steps that are up to date too");
     reproduce_cmd->add_option("--only", reproduce.only, "run only these steps (their folders' names)");
+    reproduce_cmd->add_option("--scenes", reproduce.scenes, "the folder of the shipped scene files")
+        ->capture_default_str();
   }
 
   void add_table() {
@@ -248,6 +250,9 @@ struct CommandLine::Commands {
         ->check(number_in(0, 1e5, Ends::kOpenLow))->capture_default_str();
     pour_cmd->add_option("--soak-temperature", pour.soak_temperature, "soaking water temperature [C]")
         ->check(number_in(0, 100))->capture_default_str();
+    pour_cmd->add_option("--stickiness", pour.stickiness,
+                         "pull-off force of two grains at the reference soak [grain weights]; default: the cultivar's")
+        ->check(number_in(0, 1000));
     pour_cmd->add_option("--static-friction", pour.static_friction, "mu_s, grains and bowl")
         ->check(number_in(0, 10))->capture_default_str();
     pour_cmd->add_option("--dynamic-friction", pour.dynamic_friction, "mu_k <= mu_s")->check(number_in(0, 10))

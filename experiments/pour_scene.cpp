@@ -138,6 +138,8 @@ void validate(const PourSettings& s) {
   require(s.poisson > -1.0 && s.poisson < 0.5, "Poisson's ratio must be in (-1, 0.5)");
   require(s.soak_minutes > 0.0 && s.soak_minutes <= 1e5, "--soak-minutes must be in (0, 1e5]");
   require(s.soak_temperature >= 0.0 && s.soak_temperature <= 100.0, "--soak-temperature must be in [0, 100] C");
+  require(std::isnan(s.stickiness) || (s.stickiness >= 0.0 && s.stickiness <= 1000.0),
+          "--stickiness must be in [0, 1000] grain weights");
   require(s.static_friction >= 0.0 && s.static_friction <= 10.0 && s.dynamic_friction >= 0.0 &&
               s.dynamic_friction <= s.static_friction,
           "need 0 <= --dynamic-friction <= --static-friction <= 10, got " + cell(s.dynamic_friction) + " and " +
@@ -248,7 +250,8 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
 
   const grains::WaterContentModel water(grains::read_absorption_table(grains::default_absorption_table()));
   const double cohesion_ratio =
-      water.cohesion_ratio(recipe.cultivar.stickiness, settings.soak_minutes, settings.soak_temperature);
+      water.cohesion_ratio(std::isnan(settings.stickiness) ? recipe.cultivar.stickiness : settings.stickiness,
+                           settings.soak_minutes, settings.soak_temperature);
   const double rayleigh_time = water.beta(settings.soak_minutes, settings.soak_temperature);
   const auto material = xpbd::lame_from_young_poisson(settings.young, settings.poisson);
 
@@ -343,7 +346,7 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   if (settings.vertex_block_descent) solver_settings.method = xpbd::Method::kVbd;
   xpbd::Solver solver(model, solver_settings);
 
-  CsvTable stats({"frame", "time_s", "wall_s", "awake", "candidates", "contacts", "bonds", "max_penetration_m", "kinetic_energy_j",
+  CsvTable stats({"frame", "time_s", "wall_s", "awake", "candidates", "contacts", "bonds", "bonds_broken", "max_penetration_m", "kinetic_energy_j",
                   "top_m", "broad_phase_s", "narrow_phase_s", "solve_s", "sleeping_s"});
   // The highest centre of the grains released so far, and its value before the first
   // collider is removed (a mould taken away).
@@ -412,7 +415,7 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
     const double top = top_of_grains();
     if (solver.time() <= first_removal) top_before_removal = top;
     stats.add_row({cell(frame), cell(solver.time()), cell(wall), cell(awake), cell(contact.candidates),
-                   cell(contact.contacts), cell(contact.bonds),
+                   cell(contact.contacts), cell(contact.bonds), cell(contact.bonds_broken),
                    cell(contact.max_penetration), cell(xpbd::kinetic_energy(model)), cell(top), cell(t.broad_phase),
                    cell(t.narrow_phase), cell(t.solve()), cell(t.sleeping)});
     char name[32];

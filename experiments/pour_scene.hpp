@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,9 @@ struct PourSettings {
   double poisson = 0.3;
   double soak_minutes = 120.0;     ///< sets damping (soft) and cohesion
   double soak_temperature = 10.0;  ///< [°C]
+  /// Pull-off force of two touching grains at the reference soak, in grain weights
+  /// (grains::Cultivar::stickiness); NaN: the cultivar's.
+  double stickiness = std::numeric_limits<double>::quiet_NaN();
   double static_friction = 0.5, dynamic_friction = 0.4;  ///< grain–grain and grain–bowl (ESTIMATE)
   bool cohesion = true;
   bool sleeping = true;

@@ -178,7 +178,7 @@ void validate(const RenderCommandSettings& s) {
     throw std::invalid_argument("render: --sky-image " + s.sky_image.string() + ": no such file");
 }
 
-void render_command(const RenderCommandSettings& settings, const std::filesystem::path& folder) {
+shading::Camera render_command(const RenderCommandSettings& settings, const std::filesystem::path& folder) {
   validate(settings);
   const auto start = std::chrono::steady_clock::now();
   shading::RenderScene scene;
@@ -252,8 +252,8 @@ void render_command(const RenderCommandSettings& settings, const std::filesystem
                                                  [&](int done, int) { progress.update(done); }, stop_requested);
     progress.finish();
     stop_point();
-    write_png(folder / "render.png", tone_map(image, settings.exposure));
-    write_exr(folder / "render.exr", image);
+    write_png(folder / (settings.image_name + ".png"), tone_map(image, settings.exposure));
+    write_exr(folder / (settings.image_name + ".exr"), image);
   }
   const double rays = static_cast<double>(stats.camera_rays + stats.shadow_rays);
   write_file_atomically(
@@ -280,6 +280,7 @@ void render_command(const RenderCommandSettings& settings, const std::filesystem
                 {"wall_s", cell(seconds_since(start))}}));
   std::printf("render: %d x %d at %d spp in %.1f s (%.2f M rays/s)\n", settings.render.width, settings.render.height,
               settings.render.samples_per_pixel, stats.seconds, 1e-6 * rays / stats.seconds);
+  return camera;
 }
 
 }  // namespace rice::experiments

@@ -3,8 +3,8 @@
 // chawan, glazed) as cooked rice with the CDRF (paper §4.4), on an optional ground, under a
 // sun and a uniform or image sky, from a camera given on the command line or framed
 // automatically.
-// Writes render.png (tone mapped), render.exr (linear) and run_info.txt (settings, ray counts,
-// rays per second, wall time).
+// Writes render.png (tone mapped), render.exr (linear) — or another name than `render` — and
+// run_info.txt (settings, ray counts, rays per second, wall time).
 #pragma once
 
 #include <filesystem>
@@ -37,12 +37,14 @@ struct RenderCommandSettings {
   bool ground = true;           ///< a grey plane under the meshes
   bool side_by_side = false;    ///< each mesh centred on its own spot along x (`rice grains` output)
   double exposure = 0.0;        ///< stops, PNG only
+  std::string image_name = "render";  ///< the images' file name, without .png and .exr
 };
 
 /// Throws std::invalid_argument naming the setting that is out of range or the file missing.
 void validate(const RenderCommandSettings& settings);
 
-void render_command(const RenderCommandSettings& settings, const std::filesystem::path& folder);
+/// Renders into `folder`; returns the camera it used (the framed one when none was given).
+shading::Camera render_command(const RenderCommandSettings& settings, const std::filesystem::path& folder);
 
 /// The rice material at water absorption W: CDRF σ0 and albedo from the water-content model,
 /// and a wet, slightly rough dielectric surface.

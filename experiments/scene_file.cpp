@@ -320,6 +320,7 @@ SceneDescription parse_scene(std::string_view text, const std::string& source, c
   p.soak_minutes = grains.number("soak_minutes", p.soak_minutes, [](double v) { return v > 0.0 && v <= 1e5; },
                                  "a number in (0, 1e5]");
   p.soak_temperature = grains.number_in("soak_temperature_c", p.soak_temperature, 0.0, 100.0);
+  p.stickiness = grains.number_in("stickiness", p.stickiness, 0.0, 1000.0);
   grains.finish();
 
   Section solver = section("solver");
@@ -389,6 +390,7 @@ SceneDescription parse_scene(std::string_view text, const std::string& source, c
     r.sun_irradiance = render.number_in("sun_irradiance", r.sun_irradiance, 0.0, 1e3);
     r.sky_radiance = render.number_in("sky_radiance", r.sky_radiance, 0.0, 1e3);
     r.ground = render.flag("ground", r.ground);
+    r.every_frame = render.flag("every_frame", r.every_frame);
     if (render.has("eye_m") || render.has("look_at_m")) {
       r.eye = render.vector3("eye_m", xpbd::Vec3::Zero(), 1e3);
       r.look_at = render.vector3("look_at_m", xpbd::Vec3::Zero(), 1e3);

@@ -66,6 +66,8 @@ struct SceneRender {
   /// The camera, when the file gives one; otherwise it frames the grains.
   std::optional<xpbd::Vec3> eye, look_at;
   double vertical_fov_degrees = 30.0;
+  /// Also every frame, into render_frames/frame_NNNN.png, with the last frame's camera.
+  bool every_frame = false;
 };
 
 struct SceneDescription {

@@ -51,8 +51,21 @@ SceneResult run_scene_command(const std::filesystem::path& scene_file, const std
   result.pour = pour_command(scene.pour, folder);
   if (scene.render) {
     const auto start = std::chrono::steady_clock::now();
-    render_command(scene_render_settings(*scene.render, scene.pour, folder), folder / "render");
+    RenderCommandSettings settings = scene_render_settings(*scene.render, scene.pour, folder);
+    settings.camera = render_command(settings, folder / "render");
     result.render_seconds = seconds_since(start);
+    if (scene.render->every_frame) {
+      Progress progress("render every frame", scene.pour.frames);
+      for (int frame = 1; frame <= scene.pour.frames; ++frame) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%04d", frame);
+        settings.frame = frame;
+        settings.image_name = name;
+        render_command(settings, folder / "render_frames");
+        progress.update(frame);
+      }
+      progress.finish();
+    }
   }
   return result;
 }

@@ -1,7 +1,8 @@
 // `rice reproduce` (experiments/reproduce.hpp) with a stand-in for `rice`: every step runs
 // once and writes its stamp; a second run skips them all; --force and --only choose what
-// runs; a step that reads another's output reruns when that one ran; a failing step stops the
-// run naming it; out/index.md holds each command, its figures and its tables.
+// runs; a step that reads another's output reruns when that one ran, and one that reads a
+// scene file when the file changes; a failing step stops the run naming it; out/index.md
+// holds each command, its figures and its tables.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "experiments/output.hpp"
 #include "experiments/reproduce.hpp"
 
 namespace rice::experiments {
@@ -41,22 +43,34 @@ std::string read(const std::filesystem::path& path) {
 TEST(Reproduce, RunsEachStepOnceThenSkipsWhatIsUpToDate) {
   const std::filesystem::path out = std::filesystem::path(RICE_TEST_SCRATCH) / "reproduce";
   std::filesystem::remove_all(out);
-  const size_t steps = reproduce_steps(out, false).size();
+  const std::filesystem::path scenes = out / "scenes";
+  std::filesystem::create_directories(scenes);
+  write_file_atomically(scenes / "press.toml", "# a press\n");
+  ReproduceSettings settings;
+  settings.scenes = scenes;
+  const size_t steps = reproduce_steps(out, false, scenes).size();
   FakeRice rice;
   const auto call = [&](const std::vector<std::string>& a) { return rice(a); };
-  reproduce_command({}, out, call);
+  reproduce_command(settings, out, call);
   EXPECT_EQ(rice.ran.size(), steps);
   const std::string index = read(out / "index.md");
-  EXPECT_NE(index.find("`rice table 1 --out " + (out / "table1").string() + "` — ran in"), std::string::npos) << index;
+  EXPECT_NE(index.find("`rice table 1 --scenes " + scenes.string() + " --out " + (out / "table1").string() + "` — ran in"),
+            std::string::npos)
+      << index;
   EXPECT_NE(index.find("![table1/plot.png](table1/plot.png)"), std::string::npos);
   EXPECT_NE(index.find("[table1/data.csv](table1/data.csv)"), std::string::npos);
 
   rice.ran.clear();
-  reproduce_command({}, out, call);  // everything is up to date
+  reproduce_command(settings, out, call);  // everything is up to date
   EXPECT_TRUE(rice.ran.empty());
   EXPECT_NE(read(out / "index.md").find("up to date (skipped)"), std::string::npos);
 
-  ReproduceSettings only;
+  write_file_atomically(scenes / "press.toml", "# a harder press\n");  // a scene file edited...
+  reproduce_command(settings, out, call);  // ...reruns the steps that read it
+  EXPECT_EQ(rice.ran, (std::vector<std::string>{"table1", "press"}));
+
+  rice.ran.clear();
+  ReproduceSettings only = settings;
   only.only = {"pour"};
   reproduce_command(only, out, call);  // the pour reruns only when forced...
   EXPECT_TRUE(rice.ran.empty());
@@ -70,7 +84,7 @@ TEST(Reproduce, RunsEachStepOnceThenSkipsWhatIsUpToDate) {
   reproduce_command(only, out, call);  // ...and the render of its last frame follows it
   EXPECT_EQ(rice.ran, (std::vector<std::string>{"pour", "render-pour"}));
 
-  ReproduceSettings all;
+  ReproduceSettings all = settings;
   all.force = true;
   rice.failing = "figure9";
   rice.ran.clear();
@@ -84,7 +98,7 @@ TEST(Reproduce, RunsEachStepOnceThenSkipsWhatIsUpToDate) {
   EXPECT_THROW(validate(ReproduceSettings{.only = {"figure99"}}), std::invalid_argument);
   // --full reaches the commands that have the paper's settings: table 1.
   for (const bool full : {false, true})
-    for (const ReproduceStep& step : reproduce_steps(out, full)) {
+    for (const ReproduceStep& step : reproduce_steps(out, full, scenes)) {
       if (step.folder.filename() == "table1") {
         EXPECT_EQ(std::count(step.arguments.begin(), step.arguments.end(), "--full"), full ? 1 : 0);
       }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "experiments/figure10.hpp"
@@ -258,10 +259,17 @@ TEST(SceneFile, RunWritesTheRunWithItsSceneAndABadSceneWritesNothing) {
   EXPECT_THROW(run_scene_command(chawan, {"grains.count=0"}, out), SceneError);
   EXPECT_FALSE(std::filesystem::exists(out));
   run_scene_command(chawan, {"grains.count=20", "grains.variants=2", "solver.frames=3", "render.width=32",
-                             "render.height=24", "render.samples_per_pixel=1"},
+                             "render.height=24", "render.samples_per_pixel=1", "render.every_frame=true"},
                     out);
-  for (const char* file : {"scene.toml", "stats.csv", "run_info.txt", "grains.csv", "render/render.png"})
+  for (const char* file : {"scene.toml", "stats.csv", "run_info.txt", "grains.csv", "render/render.png",
+                           "render_frames/frame_0001.png", "render_frames/frame_0002.png"})
     EXPECT_TRUE(std::filesystem::exists(out / file)) << file;
+  // Every frame through the last one's camera: the last of them is the last frame's image.
+  const auto bytes = [](const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_EQ(bytes(out / "render_frames" / "frame_0003.png"), bytes(out / "render" / "render.png"));
   // The copy reads back as the scene it ran.
   const SceneDescription copy = read_scene_file(out / "scene.toml");
   EXPECT_EQ(copy.pour.count, 800);  // the file's own value; the overrides are listed below it
