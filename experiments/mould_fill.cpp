@@ -32,7 +32,9 @@ std::vector<Vec3> mould_lattice(const xpbd::Collider& mould, const Vec3& cell) {
   for (int k = 0; k < cells.z(); ++k)
     for (int j = 0; j < cells.y(); ++j)
       for (int i = 0; i < cells.x(); ++i) {
-        const Vec3 centre = lower + (Vec3(i, j, k) + Vec3::Constant(0.5)).cwiseProduct(cell);
+        // Odd layers shifted by half a cell in x and y: each grain lands across four below.
+        const double shift = (k % 2) ? 0.5 : 0.0;
+        const Vec3 centre = lower + (Vec3(i + shift, j + shift, k) + Vec3::Constant(0.5)).cwiseProduct(cell);
         bool fits = room(centre) > 0.5 * cell.minCoeff();
         for (int corner = 0; fits && corner < 8; ++corner)
           fits = room(centre + 0.5 * Vec3((corner & 1) ? 1 : -1, (corner & 2) ? 1 : -1, (corner & 4) ? 1 : -1)

@@ -1,6 +1,9 @@
 // A mould filled with grains (scene files' `[emitter] kind = "fill"`): grain centres on a
 // lattice of boxes, one grain's bounding box each, inside the room of a collider (a hollow
-// mesh), lowest first. A lattice packs loosely (grains settle to well under its height), so
+// mesh), lowest first, each layer shifted half a box in x and y from the one below, as
+// bricks are laid: a grain lands across four, so cohesive bonds tie the columns together
+// (stacked straight, grains fell into columns that touched only above and below, and the
+// moulded pile slumped as soon as the mould went). A lattice packs loosely (grains settle to well under its height), so
 // the mould is filled in rounds: each round puts grains at the lattice points that no grain
 // is near (free_points), and they settle before the next.
 #pragma once
@@ -12,8 +15,8 @@
 namespace rice::experiments {
 
 /// Centres of boxes of size `cell` (x, y, z in the world) on a lattice over the collider's
-/// distance grid at its pose at time 0: the points whose box corners and centre all lie in
-/// the room (φ > 0, the centre at least half the smallest side in), layer by layer from the
+/// distance grid at its pose at time 0, odd layers shifted by half a cell in x and y: the
+/// points whose box corners and centre all lie in the room (φ > 0, the centre at least half the smallest side in), layer by layer from the
 /// bottom. Throws std::invalid_argument for a collider without a grid or a cell that is not
 /// positive.
 std::vector<xpbd::Vec3> mould_lattice(const xpbd::Collider& mould, const xpbd::Vec3& cell);

@@ -38,7 +38,9 @@ void CohesionBonds::project(Model& model, double h) {
     if (!(C > 0.0)) continue;
     const Vec3 n = d / C;
     const double w = inverse_mass_at(model, a, sa, pa, n) + inverse_mass_at(model, b, sb, pb, n);
-    if (!(w + alpha_tilde > 0.0)) continue;
+    // Two sleeping bodies (w = 0): nothing can move, and the bond carries no force. Solved,
+    // it would read its stretch over its compliance as a force and break a resting pair.
+    if (!(w > 0.0)) continue;
     // XPBD eq. 18: Δλ = (−C − α̃λ) / (w + α̃), applied as −Δλ along n on a (towards b).
     const double delta = (-C - alpha_tilde * bond.lambda) / (w + alpha_tilde);
     bond.lambda += delta;

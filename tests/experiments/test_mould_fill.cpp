@@ -58,6 +58,15 @@ TEST(MouldFill, AHollowCubeHoldsItsLatticeOfBoxesFromTheBottomUp) {
   EXPECT_LE(lattice.size(), full);
   EXPECT_GE(lattice.size(), margin);
   EXPECT_TRUE(std::is_sorted(lattice.begin(), lattice.end(), [](const Vec3& a, const Vec3& b) { return a.z() < b.z(); }));
+  // Laid as bricks: a point of the next layer up sits over the corner of four boxes below.
+  const Vec3 first = lattice.front();
+  const auto above = std::find_if(lattice.begin(), lattice.end(), [&](const Vec3& c) { return c.z() > first.z() + 1e-9; });
+  ASSERT_NE(above, lattice.end());
+  EXPECT_NEAR(above->z() - first.z(), cell.z(), 1e-9);
+  for (int axis = 0; axis < 2; ++axis) {
+    const double offset = std::fmod(above->coeff(axis) - first[axis], cell[axis]) / cell[axis];
+    EXPECT_NEAR(std::abs(offset), 0.5, 1e-9) << axis;
+  }
   // A solid cube's room is outside it: no lattice point inside.
   for (const Vec3& c : mould_lattice(mould_of(cube(side), /*hollow=*/false), cell))
     EXPECT_GT((c - Vec3(0.0, 0.0, 0.05)).cwiseAbs().maxCoeff(), 0.5 * side);

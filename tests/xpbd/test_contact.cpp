@@ -326,6 +326,26 @@ TEST_P(GrainContact, ABondAboveTheWeightHoldsAHangingGrainAndOneBelowBreaks) {
   EXPECT_EQ(bonds, 0);
 }
 
+TEST_P(GrainContact, BondsOfTwoSleepingGrainsHoldWithoutForce) {
+  // A grain stacked on another on the ground, bonded at 20 weights, both falling asleep: a
+  // bond whose two bodies sleep moves nothing and carries no force, so it keeps (a bond
+  // solved with no mass on either side read its stretch over its compliance as a force, and
+  // sleeping piles came apart: the bunny slumped when its mould went).
+  Model model;
+  model.contact.cohesion = true;
+  model.sleep.enabled = true;
+  add_grain(model, GetParam(), Vec3(0.0, 0.0, 0.5 * kGrainThickness));
+  add_grain(model, GetParam(), Vec3(0.0, 0.0, 1.5 * kGrainThickness));
+  const double weight = kGrainDensity * kGrainLength * kGrainWidth * kGrainThickness * 9.81;
+  for (Body& body : model.bodies) body.bond_strength = 20.0 * weight;
+  model.colliders.push_back(half_space(Vec3::UnitZ(), 0.0, 0.5, 0.4));
+  Solver solver(model, scene_settings(GetParam(), 1.0 / 30.0, 80));
+  for (int frame = 0; frame < 60; ++frame) solver.step();
+  EXPECT_TRUE(model.bodies[0].asleep && model.bodies[1].asleep);
+  EXPECT_GE(solver.contacts()->statistics().bonds, 3);
+  EXPECT_EQ(solver.contacts()->statistics().bonds_broken, 0);
+}
+
 TEST(SphereRadius, ASoftGrainsSpheresThinWithItsSmallestStretchOnly) {
   // x ↦ R diag(1, 1, k) x: every tet's F has singular values (1, 1, k), so each sphere's
   // radius is min(1, k) of its rest radius, whatever the rotation R (to 1e-8 relative: the
