@@ -18,7 +18,8 @@ void CohesionBonds::begin_substep(const Model& model, const std::vector<Touch>& 
     const double strength = std::min(body_a.bond_strength, body_b.bond_strength);
     if (!(strength > 0.0) || !bonded_.insert(touch.key).second) continue;
     bonds_.push_back({touch.key, material_coordinates(model, body_a, sa, touch.pa, &x_previous),
-                      material_coordinates(model, body_b, sb, touch.pb, &x_previous), strength});
+                      material_coordinates(model, body_b, sb, touch.pb, &x_previous), (touch.pa - touch.pb).norm(),
+                      strength});
     sorted_ = false;
   }
   broken_pairs_ = std::move(still_touching);
@@ -34,15 +35,17 @@ void CohesionBonds::project(Model& model, double h) {
     const Vec3 pa = material_point(model, a, sa, bond.anchor_a);
     const Vec3 pb = material_point(model, b, sb, bond.anchor_b);
     const Vec3 d = pa - pb;
-    const double C = d.norm();
-    if (!(C > 0.0)) continue;
-    const Vec3 n = d / C;
+    const double distance = d.norm();
+    const double C = distance - bond.length;
+    if (!(C > 0.0)) continue;  // slack
+    const Vec3 n = d / distance;
     const double w = inverse_mass_at(model, a, sa, pa, n) + inverse_mass_at(model, b, sb, pb, n);
     // Two sleeping bodies (w = 0): nothing can move, and the bond carries no force. Solved,
     // it would read its stretch over its compliance as a force and break a resting pair.
     if (!(w > 0.0)) continue;
-    // XPBD eq. 18: Δλ = (−C − α̃λ) / (w + α̃), applied as −Δλ along n on a (towards b).
-    const double delta = (-C - alpha_tilde * bond.lambda) / (w + alpha_tilde);
+    // XPBD eq. 18: Δλ = (−C − α̃λ) / (w + α̃), applied as −Δλ along n on a (towards b); a
+    // bond only pulls, λ ≤ 0.
+    const double delta = std::min((-C - alpha_tilde * bond.lambda) / (w + alpha_tilde), -bond.lambda);
     bond.lambda += delta;
     apply_impulse_at(model, a, sa, pa, delta * n);
     apply_impulse_at(model, b, sb, pb, -delta * n);

@@ -1,8 +1,10 @@
 // Cohesive bonds between sticky grains: the water-content constraint of the paper. A bond
 // forms wherever a sphere of one cohesive body comes within ContactSettings::bond_distance of
 // a sphere of another, and joins two anchors, the material points of either body at that
-// contact, by the compliant constraint C = |A_a − A_b| ≥ 0 with rest length 0: it pulls, the
-// contact pushes. Several bonds over a contact patch also resist rolling and twisting (one
+// contact, by the compliant constraint C = |A_a − A_b| − d₀ ≤ 0, d₀ the anchors' distance
+// when it formed: it pulls once stretched past d₀, the contact pushes. (With d₀ = 0 a bond
+// snapped its gap shut in one substep, up to 6 grain weights for a 20 µm gap at h = 1/2400 s,
+// and a pair forming several at once broke as it formed.) Several bonds over a contact patch also resist rolling and twisting (one
 // bond alone is a ball joint: a grain hung from one swung 2.5 mm down). A body pair's bonds
 // all break when their summed force Σ|λ|/h² exceeds the pair's strength, the smaller of the
 // two bodies' Body::bond_strength, so that strength is the pull-off force of the pair
@@ -40,6 +42,7 @@ class CohesionBonds {
   struct Bond {
     std::array<int, 4> key;  ///< (a, b, sa, sb), a < b
     Vec3 anchor_a, anchor_b;  ///< material coordinates (body.hpp)
+    double length;            ///< d₀ [m]
     double strength;          ///< [N]
     double lambda = 0.0;      ///< this substep's positional impulse [kg m]
   };

@@ -87,7 +87,9 @@ struct ContactSettings {
   /// Cohesive bonds between bodies with bond_strength > 0 (cohesion_bonds.hpp); off costs nothing.
   bool cohesion = false;
   double bond_compliance = 1e-4;  ///< α of a bond [m/N]: 1e-4 stretches 1 µm under 10 mN
-  double bond_distance = 2e-5;    ///< two spheres closer than this [m] form a bond (1% of a grain's thickness)
+  /// Two spheres closer than this [m] form a bond (1% of a grain's thickness), when they are
+  /// a contact too (their gap within the margin and their motion).
+  double bond_distance = 2e-5;
   /// k of contacts held in each particle's step under vertex block descent
   /// (particle_contacts.hpp) [N/m]: how hard a sweep pushes an overlap apart, and the step of
   /// the force's update each substep. Best near a grain tet's own stiffness (μ × edge ≈ 100 N/m

@@ -346,6 +346,26 @@ TEST_P(GrainContact, BondsOfTwoSleepingGrainsHoldWithoutForce) {
   EXPECT_EQ(solver.contacts()->statistics().bonds_broken, 0);
 }
 
+TEST_P(GrainContact, ABondFormsAtItsGapWithoutSnappingItShut) {
+  // Two grains 8 µm apart (within the bond distance and the contact margin), no gravity:
+  // bonds form at that gap and hold it. Snapping the gap shut in one substep pulled harder
+  // than the weight the pair holds, and the pair broke as it formed.
+  Model model;
+  model.gravity.setZero();
+  model.contact.cohesion = true;
+  const double gap = 8e-6;
+  add_grain(model, GetParam(), Vec3::Zero());
+  add_grain(model, GetParam(), Vec3(0.0, 0.0, kGrainThickness + gap));
+  const double weight = kGrainDensity * kGrainLength * kGrainWidth * kGrainThickness * 9.81;
+  for (Body& body : model.bodies) body.bond_strength = weight;
+  const double apart = (body_centre(model, 1) - body_centre(model, 0)).norm();
+  Solver solver(model, scene_settings(GetParam(), 1.0 / 30.0, 80));
+  for (int frame = 0; frame < 10; ++frame) solver.step();
+  EXPECT_GE(solver.contacts()->statistics().bonds, 3);
+  EXPECT_EQ(solver.contacts()->statistics().bonds_broken, 0);
+  EXPECT_NEAR((body_centre(model, 1) - body_centre(model, 0)).norm(), apart, 0.1 * gap);
+}
+
 TEST(SphereRadius, ASoftGrainsSpheresThinWithItsSmallestStretchOnly) {
   // x ↦ R diag(1, 1, k) x: every tet's F has singular values (1, 1, k), so each sphere's
   // radius is min(1, k) of its rest radius, whatever the rotation R (to 1e-8 relative: the
