@@ -459,27 +459,36 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   // pixels outside the container's solid that connect to the one under the grains' mean centre).
   const xpbd::Collider* container_room =
       settings.fill_mould >= 0 ? &mesh_colliders[settings.fill_mould] : plate ? nullptr : &model.colliders.front();
-  if (container_room && released > 0) {
+  // The grains in the container: inside the mould's room, or within the bowl's rim (its
+  // room reaches past its walls); those that fell out, maybe far, stay out of the picture.
+  const xpbd::ColliderKeyframe pose =
+      container_room ? xpbd::collider_pose(*container_room, 0.0) : xpbd::ColliderKeyframe{};
+  const auto room_at = [&](const Vec3& p) {
+    return xpbd::local_signed_distance(*container_room, pose.rotation.conjugate() * (p - pose.translation)).distance;
+  };
+  const auto in_container = [&](const Vec3& c) {
+    return settings.fill_mould >= 0 ? room_at(c) > 0.0 : c.head<2>().norm() < bowl_shape.rim_radius;
+  };
+  const long contained = container_room ? std::count_if(centres.begin(), centres.begin() + released, in_container) : 0;
+  if (container_room) result.in_container = static_cast<int>(contained);
+  if (contained > 0) {
     std::vector<grains::SurfaceMesh> meshes;
     Eigen::Vector2d lower = Eigen::Vector2d::Constant(INFINITY), upper = -lower, mean = Eigen::Vector2d::Zero();
     for (int g = 0; g < released; ++g) {
+      if (!in_container(centres[g])) continue;
       meshes.push_back(render_mesh_now(g));
       lower = lower.cwiseMin(meshes.back().V.leftCols<2>().colwise().minCoeff().transpose());
       upper = upper.cwiseMax(meshes.back().V.leftCols<2>().colwise().maxCoeff().transpose());
-      mean += centres[g].head<2>() / released;
+      mean += centres[g].head<2>() / contained;
     }
-    if (!plate && settings.fill_mould < 0) {  // the whole bowl in the picture
+    if (settings.fill_mould < 0) {  // the whole bowl in the picture
       lower = lower.cwiseMin(Eigen::Vector2d::Constant(-bowl_shape.rim_radius));
       upper = upper.cwiseMax(Eigen::Vector2d::Constant(bowl_shape.rim_radius));
     }
     const double floor = settings.fill_mould >= 0 ? 0.0 : bowl_shape.height - bowl_shape.inner_depth;
     result.section_height = 0.5 * (floor + result.top);
     const PileSection section = cut_pile(meshes, result.section_height, lower, upper, 1e-4);
-    const xpbd::ColliderKeyframe pose = xpbd::collider_pose(*container_room, 0.0);
-    const auto in_room = [&](const Eigen::Vector2d& p) {
-      const Vec3 local = pose.rotation.conjugate() * (Vec3(p.x(), p.y(), result.section_height) - pose.translation);
-      return xpbd::local_signed_distance(*container_room, local).distance > 0.0;
-    };
+    const auto in_room = [&](const Eigen::Vector2d& p) { return room_at(Vec3(p.x(), p.y(), result.section_height)) > 0.0; };
     const std::vector<char> room = region_around(section, in_room, mean);
     result.packing_fraction = packing_fraction(section, room);
     RgbImage image(section.width, section.height);  // grains white, the room grey, the rest black
@@ -577,6 +586,8 @@ unset multiplot
                 {"footprint_radius_m", cell(result.footprint_radius)},
                 {"clusters", cell(result.clusters)},
                 {"top_centre_at_end_m", cell(result.top)},
+                {"rim_height_m", plate ? "n/a" : cell(bowl_shape.height)},
+                {"grains_in_container", container_room ? cell(result.in_container) : "n/a"},
                 {"section_height_m", container_room ? cell(result.section_height) : "n/a"},
                 {"packing_fraction_in_room_at_section", container_room ? cell(result.packing_fraction) : "n/a"},
                 {"top_centre_before_removal_m", std::isfinite(first_removal) ? cell(result.top_before_removal) : "n/a"},

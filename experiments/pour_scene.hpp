@@ -121,6 +121,8 @@ struct PourResult {
   /// room's floor to the top centre (section.png), and the share of the room there that grains
   /// cover.
   double section_height = 0.0, packing_fraction = 0.0;
+  /// Grains in the mould's room or within the bowl's rim at the end (-1: a plate).
+  int in_container = -1;
 };
 
 /// Runs the scene and writes its files into `folder`.

@@ -275,6 +275,22 @@ TEST(SceneFile, RunWritesTheRunWithItsSceneAndABadSceneWritesNothing) {
   EXPECT_EQ(copy.pour.count, 800);  // the file's own value; the overrides are listed below it
 }
 
+TEST(SceneFile, GrainsThatMissTheBowlStayOutOfItsMeasures) {
+  // A bowl 1.2 cm across under a spout 4 cm wide: most grains miss it and fall on, metres
+  // down by the end; the bowl's section and packing cover those in it (the section of all of
+  // them once asked for a picture metres wide and stopped the run).
+  const std::filesystem::path out = std::filesystem::path(RICE_TEST_SCRATCH) / "scene-overflow";
+  std::filesystem::remove_all(out);
+  const SceneResult result =
+      run_scene_command(std::filesystem::path(RICE_SCENES_DIR) / "chawan.toml",
+                        {"grains.count=30", "grains.variants=2", "solver.frames=20", "container.scale=0.1",
+                         "render.width=16", "render.height=16", "render.samples_per_pixel=1"},
+                        out);
+  EXPECT_LT(result.pour.in_container, 30);
+  EXPECT_GE(result.pour.in_container, 0);
+  EXPECT_TRUE(std::filesystem::exists(out / "render" / "render.png"));
+}
+
 TEST(SceneFile, TheMouldScenesRunShortAndEveryGrainFindsRoom) {
   // Short variants of the shari and the bunny: the fill puts every grain in the mould in its
   // first round; grains start inside it (the highest centre below the mould's top).
