@@ -95,4 +95,15 @@ double packing_fraction(const PileSection& section, const std::vector<char>& reg
   return pixels > 0 ? double(covered) / double(pixels) : std::numeric_limits<double>::quiet_NaN();
 }
 
+RgbImage section_image(const PileSection& section, const std::vector<char>& region) {
+  RgbImage image(section.width, section.height);
+  for (int j = 0; j < section.height; ++j)
+    for (int i = 0; i < section.width; ++i) {
+      const size_t k = static_cast<size_t>(j) * section.width + i;
+      const std::uint8_t v = section.inside[k] ? 255 : region[k] ? 70 : 0;
+      image.set(i, section.height - 1 - j, v, v, v);
+    }
+  return image;
+}
+
 }  // namespace rice::experiments

@@ -10,6 +10,7 @@
 #include <functional>
 #include <vector>
 
+#include "experiments/png_image.hpp"
 #include "grains/mesh_types.hpp"
 
 namespace rice::experiments {
@@ -38,5 +39,8 @@ std::vector<char> region_around(const PileSection& section, const std::function<
 
 /// The share of the region's pixels that lie in a grain; NaN for an empty region.
 double packing_fraction(const PileSection& section, const std::vector<char>& region);
+
+/// The section as a picture, +y up: grains white, the region grey, the rest black.
+RgbImage section_image(const PileSection& section, const std::vector<char>& region);
 
 }  // namespace rice::experiments

@@ -20,6 +20,7 @@
 #include "experiments/mould_fill.hpp"
 #include "experiments/output.hpp"
 #include "experiments/pile_measures.hpp"
+#include "experiments/pile_plot.hpp"
 #include "experiments/pile_section.hpp"
 #include "experiments/png_image.hpp"
 #include "grains/absorption_table.hpp"
@@ -437,9 +438,10 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
                 settings.count - released, settings.count);
   write_file_atomically(folder / "stats.csv", stats.text());
 
+  // The grains released; those still parked (a fill found them no room) stay out.
   CsvTable final_centres({"grain", "x", "y", "z", "r"});
   std::vector<Vec3> centres;
-  for (int g = 0; g < settings.count; ++g) {
+  for (int g = 0; g < released; ++g) {
     const Vec3 c = xpbd::body_centre(model, model.bodies[g]);
     centres.push_back(c);
     final_centres.add_row({cell(g), cell(c.x()), cell(c.y()), cell(c.z()), cell(std::hypot(c.x(), c.y()))});
@@ -451,7 +453,7 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
       std::count_if(model.bodies.begin(), model.bodies.end(), [](const xpbd::Body& b) { return !b.asleep; }));
   result.penetration = xpbd::deepest_penetration(model, solver.time());
   // Grains a fill found no room for stay parked, far away: left out of the footprint.
-  result.footprint_radius = footprint_radius({centres.begin(), centres.begin() + released});
+  result.footprint_radius = footprint_radius(centres);
   result.clusters = count_clusters(model, 1e-4);
   result.top = top_of_grains();
   // Paper Fig. 16 b (a mould's fill) and the chawan's packing (Fig. 15): the pile cut half way
@@ -469,7 +471,7 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   const auto in_container = [&](const Vec3& c) {
     return settings.fill_mould >= 0 ? room_at(c) > 0.0 : c.head<2>().norm() < bowl_shape.rim_radius;
   };
-  const long contained = container_room ? std::count_if(centres.begin(), centres.begin() + released, in_container) : 0;
+  const long contained = container_room ? std::count_if(centres.begin(), centres.end(), in_container) : 0;
   if (container_room) result.in_container = static_cast<int>(contained);
   if (contained > 0) {
     std::vector<grains::SurfaceMesh> meshes;
@@ -491,80 +493,14 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
     const auto in_room = [&](const Eigen::Vector2d& p) { return room_at(Vec3(p.x(), p.y(), result.section_height)) > 0.0; };
     const std::vector<char> room = region_around(section, in_room, mean);
     result.packing_fraction = packing_fraction(section, room);
-    RgbImage image(section.width, section.height);  // grains white, the room grey, the rest black
-    for (int j = 0; j < section.height; ++j)
-      for (int i = 0; i < section.width; ++i) {
-        const size_t k = static_cast<size_t>(j) * section.width + i;
-        const std::uint8_t v = section.inside[k] ? 255 : room[k] ? 70 : 0;
-        image.set(i, section.height - 1 - j, v, v, v);
-      }
-    write_png(folder / "section.png", image);
+    write_png(folder / "section.png", section_image(section, room));
   }
   result.top_before_removal = std::isfinite(first_removal) ? top_before_removal : std::numeric_limits<double>::quiet_NaN();
-  // pile.png: the grains from the top (left) and the side (right).
-  const std::string top_and_side = R"(set terminal pngcairo size 1200,560
-set output 'pile.png'
-set datafile separator ','
-set multiplot layout 1,2
-set size ratio -1
-set xlabel 'x [m]'
-set ylabel 'y [m]'
-)";
-  std::optional<HeapProfile> fitted;
-  if (plate) {
-    try {
-      fitted = heap_profile(centres, 0.5 * longest);
-    } catch (const std::invalid_argument&) {
-      // Grains scattered one deep (a dry clump dropped): no flank to fit.
-    }
-  }
-  if (plate && !fitted) {
-    result.angle_of_repose_degrees = result.heap_height = std::numeric_limits<double>::quiet_NaN();
-    render_plot(folder, "pile", top_and_side + R"(set title 'The grains from the top (centres): scattered, no heap'
-plot 'final_centres.csv' using 2:3 with points pt 7 ps 0.5 notitle
-set xlabel 'x [m]'
-set ylabel 'z [m]'
-set title 'From the side'
-plot 'final_centres.csv' using 2:4 with points pt 7 ps 0.5 notitle
-unset multiplot
-)");
-  } else if (plate) {
-    const HeapProfile& heap = *fitted;
-    result.angle_of_repose_degrees = heap.angle_degrees;
-    result.heap_height = heap.apex_height;
-    CsvTable rings({"radius_m", "height_m", "on_flank"});
-    for (size_t k = 0; k < heap.ring_radius.size(); ++k)
-      rings.add_row({cell(heap.ring_radius[k]), cell(heap.ring_height[k]), cell(heap.on_flank[k] ? 1 : 0)});
-    write_file_atomically(folder / "heap_profile.csv", rings.text());
-    const std::string title = "Angle of repose " + fixed(heap.angle_degrees, 1) + " degrees (" +
-                              (settings.cohesion ? "with" : "without") + " cohesion)";
-    render_plot(folder, "pile", top_and_side + R"(set title 'The heap from the top (grain centres)'
-plot 'final_centres.csv' using 2:3 with points pt 7 ps 0.5 notitle
-set size noratio
-set xlabel 'distance from the axis [m]'
-set ylabel 'height above the lowest centre [m]'
-set yrange [0:*]
-set title ')" + title + R"('
-plot 'heap_profile.csv' using 1:($3 == 1 ? $2 : 1/0) with points pt 7 title 'highest centre of a ring: flank', \
-     'heap_profile.csv' using 1:($3 == 0 ? $2 : 1/0) with points pt 6 title 'apex and toe', \
-     )" + cell(heap.intercept) + " + " + cell(heap.slope) + R"(*x with lines lc rgb 'black' title 'least-squares flank'
-unset multiplot
-)");
-  } else {
-    render_plot(folder, "pile", top_and_side + R"(set title 'The pile from the top (grain centres; the rim)'
-set parametric
-plot [0:2*pi] )" + cell(bowl_shape.rim_radius) + "*cos(t), " + cell(bowl_shape.rim_radius) +
-                                       R"(*sin(t) with lines lc rgb 'gray' notitle, \
-     'final_centres.csv' using 2:3 with points pt 7 ps 0.5 notitle
-unset parametric
-set xlabel 'x [m]'
-set ylabel 'z [m]'
-set title 'The pile from the side (grain centres; the inside wall)'
-plot 'bowl_outline.csv' using 1:2 with lines lc rgb 'gray' notitle, \
-     'final_centres.csv' using 2:4 with points pt 7 ps 0.5 notitle
-unset multiplot
-)");
-  }
+  const std::optional<HeapProfile> fitted = write_pile_plot(
+      folder, centres,
+      {.plate = plate, .cohesion = settings.cohesion, .rim_radius = bowl_shape.rim_radius, .ring_width = 0.5 * longest});
+  result.angle_of_repose_degrees = fitted ? fitted->angle_degrees : std::numeric_limits<double>::quiet_NaN();
+  result.heap_height = fitted ? fitted->apex_height : std::numeric_limits<double>::quiet_NaN();
   stop_point();
 
   const xpbd::SolverTimings& t = solver.timings();

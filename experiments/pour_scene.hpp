@@ -108,7 +108,8 @@ struct PourResult {
   double simulation_seconds = 0.0;
   int awake = 0;  ///< grains awake at the end
   xpbd::Penetration penetration;  ///< the deepest overlaps at the end
-  /// Plate only: the heap's angle of repose [°] and its apex above the lowest centre [m].
+  /// Plate only: the heap's angle of repose [°] and its apex above the lowest centre [m]; NaN
+  /// in a bowl or for grains scattered one deep.
   double angle_of_repose_degrees = 0.0, heap_height = 0.0;
   /// The pile from above (pile_measures.hpp): the radius holding 90% of the grains' centres
   /// [m], and the groups of grains that touch (within 0.1 mm).

@@ -114,6 +114,12 @@ TEST(PileSection, ACutThroughCubesCoversTheirSquaresOnce) {
   const std::vector<char> region = region_around(section, square_and_ring, Eigen::Vector2d::Zero());
   EXPECT_NEAR(pixel * pixel * std::count(region.begin(), region.end(), 1), 9e-4, 1e-6);
   EXPECT_NEAR(packing_fraction(section, region), 5.0 / 9.0, 0.01);
+  // The picture, +y up: a grain white, the region grey, the rest black.
+  const RgbImage image = section_image(section, region);
+  const auto grey = [&](int i, int j) { return image.pixels[3 * (static_cast<size_t>(section.height - 1 - j) * image.width + i)]; };
+  EXPECT_EQ(grey(200, 200), 255);  // in the first cube
+  EXPECT_EQ(grey(55, 55), 70);     // (−0.0144, −0.0144): in the square, in no cube
+  EXPECT_EQ(grey(5, 5), 0);        // outside the square
   const std::vector<char> in_gap = region_around(section, square_and_ring, Eigen::Vector2d(0.0155, 0.0));
   EXPECT_EQ(std::count(in_gap.begin(), in_gap.end(), 1), 0);  // a seed in the closed gap
   EXPECT_TRUE(std::isnan(packing_fraction(section, std::vector<char>(section.inside.size(), 0))));
