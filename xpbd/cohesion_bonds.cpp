@@ -6,6 +6,13 @@
 namespace rice::xpbd {
 
 void CohesionBonds::begin_substep(const Model& model, const std::vector<Touch>& touches, const Positions& x_previous) {
+  sort_bonds();
+  const size_t held = bonds_.size();  // sorted; the touches' keys are distinct
+  const auto bonded = [&](const std::array<int, 4>& key) {
+    const auto at = std::lower_bound(bonds_.begin(), bonds_.begin() + held, key,
+                                     [](const Bond& bond, const std::array<int, 4>& k) { return bond.key < k; });
+    return at != bonds_.begin() + held && at->key == key;
+  };
   std::set<std::pair<int, int>> still_touching;
   for (const Touch& touch : touches) {
     const auto [a, b, sa, sb] = touch.key;
@@ -16,7 +23,7 @@ void CohesionBonds::begin_substep(const Model& model, const std::vector<Touch>& 
     const Body& body_a = model.bodies[a];
     const Body& body_b = model.bodies[b];
     const double strength = std::min(body_a.bond_strength, body_b.bond_strength);
-    if (!(strength > 0.0) || !bonded_.insert(touch.key).second) continue;
+    if (!(strength > 0.0) || bonded(touch.key)) continue;
     bonds_.push_back({touch.key, material_coordinates(model, body_a, sa, touch.pa, &x_previous),
                       material_coordinates(model, body_b, sb, touch.pb, &x_previous), (touch.pa - touch.pb).norm(),
                       strength});
@@ -52,11 +59,14 @@ void CohesionBonds::project(Model& model, double h) {
   }
 }
 
+void CohesionBonds::sort_bonds() {
+  if (sorted_) return;
+  std::sort(bonds_.begin(), bonds_.end(), [](const Bond& x, const Bond& y) { return x.key < y.key; });
+  sorted_ = true;
+}
+
 void CohesionBonds::end_substep(double h) {
-  if (!sorted_) {
-    std::sort(bonds_.begin(), bonds_.end(), [](const Bond& x, const Bond& y) { return x.key < y.key; });
-    sorted_ = true;
-  }
+  sort_bonds();
   std::vector<Bond> kept;
   kept.reserve(bonds_.size());
   for (size_t first = 0; first < bonds_.size();) {
@@ -71,7 +81,6 @@ void CohesionBonds::end_substep(double h) {
     } else {
       ++broken_;
       broken_pairs_.emplace(bonds_[first].key[0], bonds_[first].key[1]);
-      for (size_t k = first; k < last; ++k) bonded_.erase(bonds_[k].key);
     }
     first = last;
   }

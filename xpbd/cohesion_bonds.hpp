@@ -46,8 +46,10 @@ class CohesionBonds {
     double strength;          ///< [N]
     double lambda = 0.0;      ///< this substep's positional impulse [kg m]
   };
-  std::vector<Bond> bonds_;  ///< sorted by key, so a body pair's bonds are contiguous
-  std::set<std::array<int, 4>> bonded_;
+  void sort_bonds();
+  /// Sorted by key at each substep's end (a substep's new bonds are appended), so a pair's
+  /// bonds are contiguous.
+  std::vector<Bond> bonds_;
   std::set<std::pair<int, int>> broken_pairs_;  ///< broken and not yet separated
   bool sorted_ = true;
   int broken_ = 0;
