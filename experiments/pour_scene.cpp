@@ -347,8 +347,9 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   if (settings.vertex_block_descent) solver_settings.method = xpbd::Method::kVbd;
   xpbd::Solver solver(model, solver_settings);
 
-  CsvTable stats({"frame", "time_s", "wall_s", "awake", "candidates", "contacts", "bonds", "bonds_broken", "max_penetration_m", "kinetic_energy_j",
-                  "top_m", "broad_phase_s", "narrow_phase_s", "solve_s", "sleeping_s"});
+  CsvTable stats({"frame", "time_s", "wall_s", "awake", "candidates", "contacts", "bonds", "bonds_broken",
+                  "max_penetration_m", "kinetic_energy_j", "top_m", "broad_phase_s", "narrow_phase_s", "solve_s",
+                  "sleeping_s"});
   // The highest centre of the grains released so far, and its value before the first
   // collider is removed (a mould taken away).
   const auto top_of_grains = [&] {
@@ -490,7 +491,9 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
     const double floor = settings.fill_mould >= 0 ? 0.0 : bowl_shape.height - bowl_shape.inner_depth;
     result.section_height = 0.5 * (floor + result.top);
     const PileSection section = cut_pile(meshes, result.section_height, lower, upper, 1e-4);
-    const auto in_room = [&](const Eigen::Vector2d& p) { return room_at(Vec3(p.x(), p.y(), result.section_height)) > 0.0; };
+    const auto in_room = [&](const Eigen::Vector2d& p) {
+      return room_at(Vec3(p.x(), p.y(), result.section_height)) > 0.0;
+    };
     const std::vector<char> room = region_around(section, in_room, mean);
     result.packing_fraction = packing_fraction(section, room);
     write_png(folder / "section.png", section_image(section, room));
@@ -498,7 +501,10 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   result.top_before_removal = std::isfinite(first_removal) ? top_before_removal : std::numeric_limits<double>::quiet_NaN();
   const std::optional<HeapProfile> fitted = write_pile_plot(
       folder, centres,
-      {.plate = plate, .cohesion = settings.cohesion, .rim_radius = bowl_shape.rim_radius, .ring_width = 0.5 * longest});
+      {.plate = plate,
+       .cohesion = settings.cohesion,
+       .rim_radius = bowl_shape.rim_radius,
+       .ring_width = 0.5 * longest});
   result.angle_of_repose_degrees = fitted ? fitted->angle_degrees : std::numeric_limits<double>::quiet_NaN();
   result.heap_height = fitted ? fitted->apex_height : std::numeric_limits<double>::quiet_NaN();
   stop_point();

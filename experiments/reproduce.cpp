@@ -91,8 +91,10 @@ std::vector<ReproduceStep> reproduce_steps(const std::filesystem::path& out, boo
   // Each step: its title, its command (--out added below), its folder, the step it reads and
   // the files it reads.
   const std::vector<ReproduceStep> steps{
-      {"XPBD stiffness: compliance against the analytic stiffness", {"study", "xpbd-stiffness"}, "xpbd-stiffness", "", {}},
-      {"Damped oscillator: XPBD and the reference against the analytic decay", {"study", "oscillator"}, "oscillator", "", {}},
+      {"XPBD stiffness: compliance against the analytic stiffness", {"study", "xpbd-stiffness"}, "xpbd-stiffness", "",
+       {}},
+      {"Damped oscillator: XPBD and the reference against the analytic decay", {"study", "oscillator"}, "oscillator",
+       "", {}},
       {"Convergence: XPBD, XPBD with primal correction and VBD against backward Euler", {"study", "convergence"},
        "convergence", "", {}},
       {"Fig. 8: japonica grains of different sizes", {"figure", "8"}, "figure8", "", {}},
@@ -109,7 +111,8 @@ std::vector<ReproduceStep> reproduce_steps(const std::filesystem::path& out, boo
         "0.05", "--no-cohesion"},
        "heap-dry", "", {}},
       {"Pour: penetration and time against substeps", {"study", "pour-substeps"}, "pour-substeps", "", {}},
-      {"One grain: error and time against substeps, XPBD and VBD", {"study", "grain-substeps"}, "grain-substeps", "", {}},
+      {"One grain: error and time against substeps, XPBD and VBD", {"study", "grain-substeps"}, "grain-substeps", "",
+       {}},
       {"Contact: Hertz, a grain on the ground, two grains pressed together", {"study", "contact"}, "contact", "", {}},
       {"CDRF: the fit against the random-walk reference", {"study", "cdrf"}, "cdrf", "", {}},
       {"Fig. 10: a clump dropped after three soak times",

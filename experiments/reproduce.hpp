@@ -2,8 +2,9 @@
 // `rice` command that makes it, into its own folder under `out`, and `out/index.md`, which
 // shows each step's figures with its CSV files and the command that made them. A step whose
 // folder holds a stamp of the same command, the same `rice` binary and the same contents of
-// the scene files it reads is up to date and is skipped (`force` runs it anyway). `full` runs the paper's settings where a command has them
-// (table 1's 3840 × 2160, 800 spp renders).
+// the scene files it reads is up to date and is skipped (`force` runs it anyway). `full`
+// runs the paper's settings where a command has them (table 1's 3840 × 2160, 800 spp
+// renders).
 #pragma once
 
 #include <filesystem>

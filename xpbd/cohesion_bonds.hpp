@@ -3,9 +3,10 @@
 // a sphere of another, and joins two anchors, the material points of either body at that
 // contact, by the compliant constraint C = |A_a − A_b| − d₀ ≤ 0, d₀ the anchors' distance
 // when it formed: it pulls once stretched past d₀, the contact pushes. (With d₀ = 0 a bond
-// snapped its gap shut in one substep, up to 6 grain weights for a 20 µm gap at h = 1/2400 s,
-// and a pair forming several at once broke as it formed.) Several bonds over a contact patch also resist rolling and twisting (one
-// bond alone is a ball joint: a grain hung from one swung 2.5 mm down). A body pair's bonds
+// snapped its gap shut in one substep, harder than a grain weight for an 8 µm gap at
+// h = 1/2400 s, and a pair forming several at once broke as it formed.) Two sleeping bodies'
+// bonds carry no force. Several bonds over a contact patch also resist rolling and twisting
+// (one bond alone is a ball joint: a grain hung from one swung 2.5 mm down). A body pair's bonds
 // all break when their summed force Σ|λ|/h² exceeds the pair's strength, the smaller of the
 // two bodies' Body::bond_strength, so that strength is the pull-off force of the pair
 // whatever the number of bonds. The strength law lives in grains/water_content.

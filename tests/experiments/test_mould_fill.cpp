@@ -60,7 +60,8 @@ TEST(MouldFill, AHollowCubeHoldsItsLatticeOfBoxesFromTheBottomUp) {
   EXPECT_TRUE(std::is_sorted(lattice.begin(), lattice.end(), [](const Vec3& a, const Vec3& b) { return a.z() < b.z(); }));
   // Laid as bricks: a point of the next layer up sits over the corner of four boxes below.
   const Vec3 first = lattice.front();
-  const auto above = std::find_if(lattice.begin(), lattice.end(), [&](const Vec3& c) { return c.z() > first.z() + 1e-9; });
+  const auto above =
+      std::find_if(lattice.begin(), lattice.end(), [&](const Vec3& c) { return c.z() > first.z() + 1e-9; });
   ASSERT_NE(above, lattice.end());
   EXPECT_NEAR(above->z() - first.z(), cell.z(), 1e-9);
   for (int axis = 0; axis < 2; ++axis) {
@@ -116,7 +117,9 @@ TEST(PileSection, ACutThroughCubesCoversTheirSquaresOnce) {
   EXPECT_NEAR(packing_fraction(section, region), 5.0 / 9.0, 0.01);
   // The picture, +y up: a grain white, the region grey, the rest black.
   const RgbImage image = section_image(section, region);
-  const auto grey = [&](int i, int j) { return image.pixels[3 * (static_cast<size_t>(section.height - 1 - j) * image.width + i)]; };
+  const auto grey = [&](int i, int j) {
+    return image.pixels[3 * (static_cast<size_t>(section.height - 1 - j) * image.width + i)];
+  };
   EXPECT_EQ(grey(200, 200), 255);  // in the first cube
   EXPECT_EQ(grey(55, 55), 70);     // (−0.0144, −0.0144): in the square, in no cube
   EXPECT_EQ(grey(5, 5), 0);        // outside the square
