@@ -174,7 +174,7 @@ struct CommandLine::Commands {
   CLI::App* pour_cmd = nullptr;
   PourSettings pour;
   std::string pour_out = "out/pour", pour_body = "rigid", pour_container = "chawan";
-  bool no_cohesion = false, no_sleep = false;
+  bool no_cohesion = false, no_damping = false, no_sleep = false;
 
   Commands() {
     app.require_subcommand(1);
@@ -261,6 +261,7 @@ struct CommandLine::Commands {
         ->check(number_in(2e-4, 1e-2))->capture_default_str();
     pour_cmd->add_option("--seed", pour.seed, "random seed")->check(seed_value())->capture_default_str();
     pour_cmd->add_flag("--no-cohesion", no_cohesion, "no water-content bonds between grains");
+    pour_cmd->add_flag("--no-damping", no_damping, "soft grains without the soak's Rayleigh damping");
     pour_cmd->add_flag("--no-sleep", no_sleep, "resting grains keep being simulated");
     pour_cmd->add_flag("--render-meshes", pour.render_meshes, "also write each frame's render meshes (PLY, large)");
   }
@@ -277,6 +278,7 @@ struct CommandLine::Commands {
     settings.body = pour_body == "soft" ? xpbd::BodyKind::kSoft : xpbd::BodyKind::kRigid;
     settings.container = pour_container == "plate" ? Container::kPlate : Container::kChawan;
     settings.cohesion = !no_cohesion;
+    settings.damping = !no_damping;
     settings.sleeping = !no_sleep;
     return settings;
   }

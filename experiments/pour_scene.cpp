@@ -253,7 +253,7 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   const double cohesion_ratio =
       water.cohesion_ratio(std::isnan(settings.stickiness) ? recipe.cultivar.stickiness : settings.stickiness,
                            settings.soak_minutes, settings.soak_temperature);
-  const double rayleigh_time = water.beta(settings.soak_minutes, settings.soak_temperature);
+  const double rayleigh_time = settings.damping ? water.beta(settings.soak_minutes, settings.soak_temperature) : 0.0;
   const auto material = xpbd::lame_from_young_poisson(settings.young, settings.poisson);
 
   xpbd::Model model;
@@ -555,6 +555,7 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
                 {"young_pa", cell(settings.young)},
                 {"rayleigh_time_s", cell(rayleigh_time)},
                 {"cohesion", settings.cohesion ? "on" : "off"},
+                {"damping", settings.damping ? "on" : "off"},
                 {"pull_off_force_in_weights", cell(cohesion_ratio)},
                 {"sleeping", settings.sleeping ? "on" : "off"},
                 {"static_friction", cell(settings.static_friction)},

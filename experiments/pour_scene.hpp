@@ -79,6 +79,7 @@ struct PourSettings {
   double stickiness = std::numeric_limits<double>::quiet_NaN();
   double static_friction = 0.5, dynamic_friction = 0.4;  ///< grain–grain and grain–bowl (ESTIMATE)
   bool cohesion = true;
+  bool damping = true;  ///< soft grains' Rayleigh damping τ from the soak (eq. 4); off: τ = 0
   bool sleeping = true;
   bool render_meshes = false;  ///< also write each frame's deformed render meshes (large)
   double grid_spacing = 1e-3;  ///< chawan distance grid [m]

@@ -351,6 +351,7 @@ SceneDescription parse_scene(std::string_view text, const std::string& source, c
   }
   if (!friction) p.static_friction = p.dynamic_friction = 0.0;
   p.cohesion = effects.flag("cohesion", p.cohesion);
+  p.damping = effects.flag("damping", p.damping);
   p.sleeping = effects.flag("sleeping", p.sleeping);
   p.render_meshes = effects.flag("render_meshes", p.render_meshes);
   effects.finish();

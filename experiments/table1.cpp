@@ -35,6 +35,7 @@ std::string simulated_effects(const PourSettings& p) {
   std::string text = p.body == xpbd::BodyKind::kRigid ? "rigid grains" : "soft grains";
   if (p.static_friction > 0.0) text += "; friction";
   if (p.cohesion) text += "; cohesion (" + cell(p.soak_minutes) + " min soak)";
+  if (p.body == xpbd::BodyKind::kSoft && p.damping) text += "; damping";
   if (p.sleeping) text += "; sleeping";
   text += p.container == Container::kChawan ? "; chawan" : "; plate";
   if (p.fill_mould >= 0) text += "; mould filled in rounds";

@@ -62,6 +62,7 @@ kind = "plate"
 [effects]
 friction = false
 cohesion = false
+damping = false
 )", "s.toml");
   EXPECT_EQ(scene.pour.count, 12);
   EXPECT_EQ(scene.pour.body, xpbd::BodyKind::kSoft);
@@ -72,6 +73,7 @@ cohesion = false
   EXPECT_EQ(scene.pour.static_friction, 0.0);
   EXPECT_EQ(scene.pour.dynamic_friction, 0.0);
   EXPECT_FALSE(scene.pour.cohesion);
+  EXPECT_FALSE(scene.pour.damping);
 }
 
 /// The message of reading `text` as "bad.toml" (empty when it is read).
