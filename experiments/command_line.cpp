@@ -476,6 +476,8 @@ struct CommandLine::Commands {
     render_cmd->add_option("--pour", render_pour, "or: the output folder of a rigid rice pour");
     render_cmd->add_option("--frame", render.frame, "the pour's frame (0: the last)")->check(number_in(0, 1e6))
         ->capture_default_str();
+    render_cmd->add_flag("--every-frame", render.every_frame,
+                         "every frame of the pour into frame_NNNN.png, framed as the last");
     render_cmd->add_option("--out", render_out, "output folder")->capture_default_str();
     render_cmd->add_option("--absorption", render.absorption_percent, "water absorption W [%]: sigma0 and albedo")
         ->check(number_in(0, 100))->capture_default_str();

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 #include "experiments/interrupt.hpp"
@@ -45,18 +46,42 @@ std::filesystem::path pour_frame_path(const std::filesystem::path& pour, int fra
   return pour / "frames" / name;
 }
 
-// The pour's last frame file.
-std::filesystem::path last_pour_frame(const std::filesystem::path& pour) {
-  std::filesystem::path last;
+// The pour's variants (its render meshes) and their vertex curvature, computed once for every
+// frame rendered.
+struct PourVariants {
+  std::vector<grains::SurfaceMesh> meshes;
+  std::vector<Eigen::VectorXd> curvature;
+};
+
+PourVariants read_pour_variants(const std::filesystem::path& pour) {
+  PourVariants variants;
+  for (int k = 0;; ++k) {
+    const auto path = pour / "variants" / ("variant_" + std::to_string(k) + ".ply");
+    if (!std::filesystem::exists(path)) break;
+    variants.meshes.push_back(grains::read_surface_mesh(path));
+  }
+  Progress progress("render: variants and curvature", static_cast<int>(variants.meshes.size()));
+  for (size_t k = 0; k < variants.meshes.size(); ++k) {
+    variants.curvature.push_back(shading::vertex_mean_curvature(variants.meshes[k].V, variants.meshes[k].F));
+    progress.update(static_cast<int>(k + 1));
+  }
+  progress.finish();
+  return variants;
+}
+
+// The pour's frames, in order.
+std::vector<std::filesystem::path> pour_frames(const std::filesystem::path& pour) {
+  std::vector<std::filesystem::path> frames;
   for (const auto& entry : std::filesystem::directory_iterator(pour / "frames"))
-    if (entry.path().extension() == ".csv" && (last.empty() || entry.path().filename() > last.filename())) last = entry.path();
-  if (last.empty()) throw std::runtime_error("render: " + (pour / "frames").string() + " holds no frame");
-  return last;
+    if (entry.path().extension() == ".csv") frames.push_back(entry.path());
+  if (frames.empty()) throw std::runtime_error("render: " + (pour / "frames").string() + " holds no frame");
+  std::sort(frames.begin(), frames.end());
+  return frames;
 }
 
 // Instances of the pour's variants at a frame's poses: c + q (drop + P R p − c₀).
-void add_pour_grains(shading::RenderScene& scene, const std::filesystem::path& pour, const std::filesystem::path& frame,
-                     Eigen::AlignedBox3d& box) {
+void add_pour_grains(shading::RenderScene& scene, const std::filesystem::path& pour, const PourVariants& variants,
+                     const std::filesystem::path& frame, Eigen::AlignedBox3d& box) {
   const NumericCsv grains_csv = read_numeric_csv(pour / "grains.csv");
   const NumericCsv poses = read_numeric_csv(frame);
   if (poses.columns.size() < 2 || poses.columns[1] != "x")
@@ -65,18 +90,8 @@ void add_pour_grains(shading::RenderScene& scene, const std::filesystem::path& p
     throw std::runtime_error("render: " + frame.string() + " has " + std::to_string(poses.rows.size()) +
                              " grains, grains.csv " + std::to_string(grains_csv.rows.size()));
   std::vector<int> prototype;
-  std::vector<grains::SurfaceMesh> variants;
-  for (int k = 0;; ++k) {
-    const auto path = pour / "variants" / ("variant_" + std::to_string(k) + ".ply");
-    if (!std::filesystem::exists(path)) break;
-    variants.push_back(grains::read_surface_mesh(path));
-  }
-  Progress progress("render: variants and curvature", static_cast<int>(variants.size()));
-  for (size_t k = 0; k < variants.size(); ++k) {
-    prototype.push_back(add_grain_prototype(scene, variants[k].V, variants[k].F));
-    progress.update(static_cast<int>(k + 1));
-  }
-  progress.finish();
+  for (size_t k = 0; k < variants.meshes.size(); ++k)
+    prototype.push_back(scene.add_prototype(variants.meshes[k].V, variants.meshes[k].F, variants.curvature[k]));
   const auto col = [&](const NumericCsv& csv, const std::vector<double>& row, const char* name) {
     return row[csv.column(name)];
   };
@@ -98,7 +113,7 @@ void add_pour_grains(shading::RenderScene& scene, const std::filesystem::path& p
     const Eigen::Affine3d place = Eigen::Translation3d(c) * q.normalized() * Eigen::Translation3d(drop - c0) *
                                   R.normalized() * Eigen::Scaling(col(grains_csv, a, "swell"));
     scene.add_instance(prototype[variant], place, 0);
-    const auto& V = variants[variant].V;
+    const auto& V = variants.meshes[variant].V;
     for (Eigen::Index v = 0; v < V.rows(); v += 16) box.extend(place * V.row(v).transpose());
   }
 }
@@ -165,6 +180,8 @@ void validate(const RenderCommandSettings& s) {
                                   pour_frame_path(s.pour, s.frame).string());
   }
   if (s.frame < 0) throw std::invalid_argument("render: --frame must be >= 0");
+  if (s.every_frame && (s.pour.empty() || s.frame > 0))
+    throw std::invalid_argument("render: --every-frame renders each frame of a --pour, without --frame");
   if (!(s.absorption_percent >= 0.0 && s.absorption_percent <= 100.0))
     throw std::invalid_argument("render: --absorption must be in [0, 100] %");
   if (s.render.width < 1 || s.render.height < 1 || s.render.width > 16384 || s.render.height > 16384)
@@ -181,49 +198,23 @@ void validate(const RenderCommandSettings& s) {
 shading::Camera render_command(const RenderCommandSettings& settings, const std::filesystem::path& folder) {
   validate(settings);
   const auto start = std::chrono::steady_clock::now();
-  shading::RenderScene scene;
-  Eigen::AlignedBox3d box;
   const auto files = mesh_files(settings.meshes);
-  std::filesystem::path frame;
+  // A pour's frames to render: one, or every frame, the last first so that its framing holds
+  // for all. The variants' curvature and the CDRF table are made once for all of them.
+  std::vector<std::filesystem::path> frames;
   if (!settings.pour.empty()) {
-    frame = settings.frame > 0 ? pour_frame_path(settings.pour, settings.frame) : last_pour_frame(settings.pour);
-    add_pour_grains(scene, settings.pour, frame, box);
-  } else {
-    Progress progress("render: meshes and curvature", static_cast<int>(files.size()));
-    double next_x = 0.0;  // side by side: the next mesh's left edge
-    for (size_t i = 0; i < files.size(); ++i) {
-      stop_point();
-      grains::SurfaceMesh mesh = grains::read_surface_mesh(files[i]);
-      Eigen::Affine3d place = Eigen::Affine3d::Identity();
-      if (settings.side_by_side) {
-        const Eigen::Vector3d lo = mesh.V.colwise().minCoeff(), hi = mesh.V.colwise().maxCoeff();
-        place.translation() = Eigen::Vector3d(next_x - lo.x(), -0.5 * (lo.y() + hi.y()), -lo.z());
-        next_x += 1.15 * (hi.x() - lo.x());
-      }
-      scene.add_instance(add_grain_prototype(scene, mesh.V, mesh.F), place, 0);
-      for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) box.extend(place * mesh.V.row(v).transpose());
-      progress.update(static_cast<int>(i + 1));
+    frames = pour_frames(settings.pour);
+    if (settings.every_frame) {
+      std::reverse(frames.begin(), frames.end());
+    } else {
+      frames = {settings.frame > 0 ? pour_frame_path(settings.pour, settings.frame) : frames.back()};
     }
-    progress.finish();
   }
-  std::vector<shading::Material> materials = {
+  const PourVariants variants = settings.pour.empty() ? PourVariants{} : read_pour_variants(settings.pour);
+  const std::vector<shading::Material> materials = {
       rice_material(settings.absorption_percent),
       {.kind = shading::MaterialKind::kDiffuse, .albedo = shading::Color::Constant(0.35f)},
       {.kind = shading::MaterialKind::kGlazed, .albedo = shading::Color(0.12f, 0.1f, 0.09f), .roughness = 0.08}};
-  Eigen::AlignedBox3d scene_box = box;  // grains, and the bowl when there is one
-  if (!settings.pour.empty() && std::filesystem::exists(settings.pour / "chawan.obj")) {
-    const grains::SurfaceMesh bowl = grains::read_surface_mesh(settings.pour / "chawan.obj");
-    scene.add_instance(scene.add_prototype(bowl.V, bowl.F), Eigen::Affine3d::Identity(), 2);  // a dark glazed chawan
-    for (Eigen::Index v = 0; v < bowl.V.rows(); ++v) scene_box.extend(bowl.V.row(v).transpose());
-  }
-  if (settings.ground) {
-    // A square four times the meshes' extent, just under their lowest point.
-    const double half = 2.0 * scene_box.diagonal().head<2>().maxCoeff() + 1e-3, z = scene_box.min().z() - 1e-6;
-    const Eigen::Vector2d c = scene_box.center().head<2>();
-    add_ground(scene, c.x() - half, c.y() - half, c.x() + half, c.y() + half, z, 1);
-  }
-  scene.commit();
-
   shading::Lights lights;
   if (settings.sun_irradiance > 0.0) {
     lights.suns.push_back({.direction = direction_from(settings.sun_elevation_degrees, settings.sun_azimuth_degrees).cast<float>(),
@@ -239,29 +230,83 @@ shading::Camera render_command(const RenderCommandSettings& settings, const std:
   } else {
     lights.environment.constant = shading::Color::Constant(static_cast<float>(settings.sky_radiance));
   }
-  const double aspect = static_cast<double>(settings.render.width) / settings.render.height;
-  Eigen::AlignedBox3f grains_box(scene_box.min().cast<float>(), scene_box.max().cast<float>());
-  const shading::Camera camera = settings.camera ? *settings.camera : framing_camera(grains_box, 35.0, -60.0, 30.0, aspect);
-
   const shading::CdrfTable cdrf(513, 513);
   make_output_folder(folder);
+
+  std::optional<shading::Camera> camera = settings.camera;
   shading::RenderStats stats;
-  {
+  int instances = 0, prototypes = 0;
+  const int images = settings.pour.empty() ? 1 : static_cast<int>(frames.size());
+  Progress frame_progress("render: frames", images);
+  for (int k = 0; k < images; ++k) {
+    shading::RenderScene scene;
+    Eigen::AlignedBox3d box;
+    if (!settings.pour.empty()) {
+      add_pour_grains(scene, settings.pour, variants, frames[k], box);
+    } else {
+      Progress progress("render: meshes and curvature", static_cast<int>(files.size()));
+      double next_x = 0.0;  // side by side: the next mesh's left edge
+      for (size_t i = 0; i < files.size(); ++i) {
+        stop_point();
+        grains::SurfaceMesh mesh = grains::read_surface_mesh(files[i]);
+        Eigen::Affine3d place = Eigen::Affine3d::Identity();
+        if (settings.side_by_side) {
+          const Eigen::Vector3d lo = mesh.V.colwise().minCoeff(), hi = mesh.V.colwise().maxCoeff();
+          place.translation() = Eigen::Vector3d(next_x - lo.x(), -0.5 * (lo.y() + hi.y()), -lo.z());
+          next_x += 1.15 * (hi.x() - lo.x());
+        }
+        scene.add_instance(add_grain_prototype(scene, mesh.V, mesh.F), place, 0);
+        for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) box.extend(place * mesh.V.row(v).transpose());
+        progress.update(static_cast<int>(i + 1));
+      }
+      progress.finish();
+    }
+    Eigen::AlignedBox3d scene_box = box;  // grains, and the bowl when there is one
+    if (!settings.pour.empty() && std::filesystem::exists(settings.pour / "chawan.obj")) {
+      const grains::SurfaceMesh bowl = grains::read_surface_mesh(settings.pour / "chawan.obj");
+      scene.add_instance(scene.add_prototype(bowl.V, bowl.F), Eigen::Affine3d::Identity(), 2);  // a dark glazed chawan
+      for (Eigen::Index v = 0; v < bowl.V.rows(); ++v) scene_box.extend(bowl.V.row(v).transpose());
+    }
+    if (settings.ground) {
+      // A square four times the meshes' extent, just under their lowest point.
+      const double half = 2.0 * scene_box.diagonal().head<2>().maxCoeff() + 1e-3, z = scene_box.min().z() - 1e-6;
+      const Eigen::Vector2d c = scene_box.center().head<2>();
+      add_ground(scene, c.x() - half, c.y() - half, c.x() + half, c.y() + half, z, 1);
+    }
+    scene.commit();
+    if (!camera) {
+      const double aspect = static_cast<double>(settings.render.width) / settings.render.height;
+      const Eigen::AlignedBox3f grains_box(scene_box.min().cast<float>(), scene_box.max().cast<float>());
+      camera = framing_camera(grains_box, 35.0, -60.0, 30.0, aspect);
+    }
+    shading::RenderStats frame_stats;
     Progress progress("render: tiles", shading::tile_count(settings.render));
-    const shading::Image image = shading::render(scene, materials, lights, camera, cdrf, settings.render, &stats,
+    const shading::Image image = shading::render(scene, materials, lights, *camera, cdrf, settings.render, &frame_stats,
                                                  [&](int done, int) { progress.update(done); }, stop_requested);
     progress.finish();
     stop_point();
-    write_png(folder / (settings.image_name + ".png"), tone_map(image, settings.exposure));
-    write_exr(folder / (settings.image_name + ".exr"), image);
+    const std::string name = settings.every_frame ? frames[k].stem().string() : "render";
+    write_png(folder / (name + ".png"), tone_map(image, settings.exposure));
+    write_exr(folder / (name + ".exr"), image);
+    stats.camera_rays += frame_stats.camera_rays;
+    stats.shadow_rays += frame_stats.shadow_rays;
+    stats.seconds += frame_stats.seconds;
+    instances = scene.instance_count();
+    prototypes = scene.prototype_count();
+    frame_progress.update(k + 1);
   }
+  frame_progress.finish();
   const double rays = static_cast<double>(stats.camera_rays + stats.shadow_rays);
+  const std::string meshes = settings.pour.empty() ? cell(static_cast<long>(files.size()))
+                             : settings.every_frame ? "pour " + settings.pour.string() + ", every frame"
+                                                    : "pour " + frames.front().string();
   write_file_atomically(
       folder / "run_info.txt",
       run_info({{"command", "render"},
-                {"meshes", settings.pour.empty() ? cell(static_cast<long>(files.size())) : "pour " + frame.string()},
-                {"instances", cell(scene.instance_count())},
-                {"prototypes", cell(scene.prototype_count())},
+                {"meshes", meshes},
+                {"images", cell(images)},
+                {"instances", cell(instances)},
+                {"prototypes", cell(prototypes)},
                 {"absorption_percent", cell(settings.absorption_percent)},
                 {"sigma0_m", cell(materials[0].sigma0)},
                 {"width", cell(settings.render.width)},
@@ -278,9 +323,9 @@ shading::Camera render_command(const RenderCommandSettings& settings, const std:
                 {"render_s", cell(stats.seconds)},
                 {"rays_per_second", cell(rays / stats.seconds)},
                 {"wall_s", cell(seconds_since(start))}}));
-  std::printf("render: %d x %d at %d spp in %.1f s (%.2f M rays/s)\n", settings.render.width, settings.render.height,
-              settings.render.samples_per_pixel, stats.seconds, 1e-6 * rays / stats.seconds);
-  return camera;
+  std::printf("render: %d image(s) of %d x %d at %d spp in %.1f s (%.2f M rays/s)\n", images, settings.render.width,
+              settings.render.height, settings.render.samples_per_pixel, stats.seconds, 1e-6 * rays / stats.seconds);
+  return *camera;
 }
 
 }  // namespace rice::experiments

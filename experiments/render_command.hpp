@@ -3,8 +3,8 @@
 // chawan, glazed) as cooked rice with the CDRF (paper §4.4), on an optional ground, under a
 // sun and a uniform or image sky, from a camera given on the command line or framed
 // automatically.
-// Writes render.png (tone mapped), render.exr (linear) — or another name than `render` — and
-// run_info.txt (settings, ray counts, rays per second, wall time).
+// Writes render.png (tone mapped), render.exr (linear) — frame_NNNN.png and .exr for every
+// frame of a pour — and run_info.txt (settings, ray counts, rays per second, wall time).
 #pragma once
 
 #include <filesystem>
@@ -37,7 +37,9 @@ struct RenderCommandSettings {
   bool ground = true;           ///< a grey plane under the meshes
   bool side_by_side = false;    ///< each mesh centred on its own spot along x (`rice grains` output)
   double exposure = 0.0;        ///< stops, PNG only
-  std::string image_name = "render";  ///< the images' file name, without .png and .exr
+  /// A pour's every frame, into frame_NNNN.png and .exr, with one camera: the given one or the
+  /// last frame's framing. The variants' curvature and the CDRF table are made once.
+  bool every_frame = false;
 };
 
 /// Throws std::invalid_argument naming the setting that is out of range or the file missing.

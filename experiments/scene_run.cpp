@@ -55,16 +55,8 @@ SceneResult run_scene_command(const std::filesystem::path& scene_file, const std
     settings.camera = render_command(settings, folder / "render");
     result.render_seconds = seconds_since(start);
     if (scene.render->every_frame) {
-      Progress progress("render every frame", scene.pour.frames);
-      for (int frame = 1; frame <= scene.pour.frames; ++frame) {
-        char name[32];
-        std::snprintf(name, sizeof name, "frame_%04d", frame);
-        settings.frame = frame;
-        settings.image_name = name;
-        render_command(settings, folder / "render_frames");
-        progress.update(frame);
-      }
-      progress.finish();
+      settings.every_frame = true;
+      render_command(settings, folder / "render_frames");
     }
   }
   return result;
