@@ -173,10 +173,7 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   validate(settings);
   const auto start = std::chrono::steady_clock::now();
   const bool plate = settings.container == Container::kPlate;
-  grains::ChawanShape bowl_shape;
-  for (double* size : {&bowl_shape.rim_radius, &bowl_shape.height, &bowl_shape.inner_depth, &bowl_shape.wall_thickness,
-                       &bowl_shape.foot_radius, &bowl_shape.foot_height})
-    *size *= settings.chawan_scale;
+  const grains::ChawanShape bowl_shape = grains::scaled({}, settings.chawan_scale);
 
   // Grains: variants, their spheres, then instances placed on a lattice above the bowl.
   grains::GrainRecipe recipe;
@@ -453,7 +450,6 @@ PourResult pour_command(const PourSettings& settings, const std::filesystem::pat
   result.awake = static_cast<int>(
       std::count_if(model.bodies.begin(), model.bodies.end(), [](const xpbd::Body& b) { return !b.asleep; }));
   result.penetration = xpbd::deepest_penetration(model, solver.time());
-  // Grains a fill found no room for stay parked, far away: left out of the footprint.
   result.footprint_radius = footprint_radius(centres);
   result.clusters = count_clusters(model, 1e-4);
   result.top = top_of_grains();

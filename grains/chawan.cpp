@@ -53,6 +53,13 @@ void validate(const ChawanShape& s) {
   }
 }
 
+ChawanShape scaled(const ChawanShape& shape, double factor) {
+  ChawanShape s = shape;
+  for (double* size : {&s.rim_radius, &s.height, &s.inner_depth, &s.wall_thickness, &s.foot_radius, &s.foot_height})
+    *size *= factor;
+  return s;
+}
+
 SurfaceMesh make_chawan(const ChawanShape& shape) {
   validate(shape);
   const std::vector<Eigen::Vector2d> p = profile(shape);

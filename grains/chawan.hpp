@@ -23,6 +23,9 @@ struct ChawanShape {
 /// positive.
 void validate(const ChawanShape& shape);
 
+/// The same bowl `factor` times as large (its sizes scaled, its point counts kept).
+ChawanShape scaled(const ChawanShape& shape, double factor);
+
 /// The bowl's closed, manifold, outward-oriented surface, foot at z = 0, axis along z.
 SurfaceMesh make_chawan(const ChawanShape& shape = {});
 

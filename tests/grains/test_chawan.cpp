@@ -45,6 +45,13 @@ TEST(Chawan, IsAClosedOutwardBowlOfTheStatedSize) {
   EXPECT_NEAR(enclosed_volume(bowl), expected_volume(shape), 0.02 * expected_volume(shape));
 }
 
+TEST(Chawan, AScaledBowlIsTheSameBowlLargerOrSmaller) {
+  const SurfaceMesh bowl = make_chawan(), half = make_chawan(scaled({}, 0.5));
+  ASSERT_EQ(half.V.rows(), bowl.V.rows());
+  EXPECT_LT((half.V - 0.5 * bowl.V).cwiseAbs().maxCoeff(), 1e-15);
+  EXPECT_EQ(half.F, bowl.F);
+}
+
 TEST(Chawan, CrossingWallsAndBadSizesAreRefused) {
   ChawanShape shape;
   shape.inner_depth = 0.064;  // the inside bottom would pass through the foot
