@@ -14,7 +14,7 @@
 #include <random>
 #include <vector>
 
-#include "experiments/render_command.hpp"
+#include "experiments/render/render_command.hpp"
 #include "grains/cultivar.hpp"
 #include "grains/grain_generator.hpp"
 #include "grains/random_stream.hpp"

@@ -35,7 +35,7 @@
 //  - isotropic scattering with μs = μs' (the similarity relation), as only μs' matters once
 //    light has scattered a few times.
 //
-// σ0 (eq. 8): ln σ0 = s0 + s1 W, fitted by `rice study cdrf` (experiments/cdrf_study.hpp) to
+// σ0 (eq. 8): ln σ0 = s0 + s1 W, fitted by `rice study cdrf` (experiments/studies/cdrf_study.hpp) to
 // the random-walk reference with the optics above; the constants are that study's output.
 #pragma once
 

@@ -5,7 +5,7 @@
 #include <optional>
 #include <sstream>
 
-#include "experiments/scene_file.hpp"
+#include "experiments/scene/scene_file.hpp"
 #include "grains/absorption_table.hpp"
 #include "grains/mesh_io.hpp"
 

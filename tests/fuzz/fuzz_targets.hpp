@@ -1,6 +1,6 @@
 // What the fuzzers check: one entry per reader of outside input. Each entry reads the bytes
 // as its format and holds the reader to its promises (grains/mesh_io.hpp,
-// grains/absorption_table.hpp, experiments/scene_file.hpp): bad input ends in a std::runtime_error whose message starts
+// grains/absorption_table.hpp, experiments/scene/scene_file.hpp): bad input ends in a std::runtime_error whose message starts
 // with the input's name; good input gives finite coordinates, indices in range, a size
 // bounded by the input's, and a write–read round trip that changes no bit. A broken promise
 // throws Finding; any other exception (std::bad_alloc, std::out_of_range, ...) escapes as it
@@ -27,7 +27,7 @@ struct Target {
 };
 
 /// Every fuzz target: obj, off, ply, medit (reader and writer round trip), absorption, scene
-/// (experiments/scene_file.hpp: values within the documented ranges, the same twice).
+/// (experiments/scene/scene_file.hpp: values within the documented ranges, the same twice).
 const std::vector<Target>& targets();
 
 /// The target called `name`; throws std::invalid_argument for an unknown name.

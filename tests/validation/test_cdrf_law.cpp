@@ -1,9 +1,9 @@
 // The σ0 law stored in the water-content model (grains/water_content.cpp) against a fresh fit
-// to the random-walk reference (experiments/cdrf_study.hpp), at a water content between the
+// to the random-walk reference (experiments/studies/cdrf_study.hpp), at a water content between the
 // study's points: the stored constants are what the study produces, not numbers typed in.
 #include <gtest/gtest.h>
 
-#include "experiments/cdrf_study.hpp"
+#include "experiments/studies/cdrf_study.hpp"
 #include "grains/water_content.hpp"
 
 namespace rice::experiments {

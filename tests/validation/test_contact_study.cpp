@@ -1,4 +1,4 @@
-// The contact study's claims on small settings (experiments/contact_study.hpp): the reference's
+// The contact study's claims on small settings (experiments/studies/contact_study.hpp): the reference's
 // barrier and vertex block descent's per-particle ground give the same Hertz force on the same
 // mesh, and that force approaches Hertz's (at the measured contact radius) from the coarse to
 // the finer mesh; a grain-sized body
@@ -9,8 +9,8 @@
 
 #include <cmath>
 
-#include "experiments/contact_study.hpp"
-#include "experiments/grain_contact.hpp"
+#include "experiments/studies/contact_study.hpp"
+#include "experiments/studies/grain_contact.hpp"
 
 namespace rice::experiments {
 namespace {

@@ -8,7 +8,7 @@
 
 #include <algorithm>
 
-#include "experiments/convergence_study.hpp"
+#include "experiments/studies/convergence_study.hpp"
 
 namespace rice::experiments {
 namespace {

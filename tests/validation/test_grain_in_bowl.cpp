@@ -2,7 +2,7 @@
 // signs, and a grain dropped into it at 30 fps comes to rest on its inside surface.
 #include <gtest/gtest.h>
 
-#include "experiments/collider_grid.hpp"
+#include "experiments/scene/collider_grid.hpp"
 #include "grains/chawan.hpp"
 #include "tests/xpbd/grain_fixtures.hpp"
 #include "xpbd/contact_solver.hpp"

@@ -4,7 +4,7 @@
 // correction its fixed point is backward Euler itself, to round-off.
 #include <gtest/gtest.h>
 
-#include "experiments/convergence_scenes.hpp"
+#include "experiments/studies/convergence_scenes.hpp"
 #include "fem_reference/implicit_solver.hpp"
 #include "fem_reference/trajectory_error.hpp"
 #include "xpbd/solver.hpp"

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "experiments/oscillator_study.hpp"
+#include "experiments/studies/oscillator_study.hpp"
 
 namespace rice::experiments {
 namespace {

@@ -2,7 +2,7 @@
 // depend on the iteration count while PBD's does.
 #include <gtest/gtest.h>
 
-#include "experiments/xpbd_stiffness_study.hpp"
+#include "experiments/studies/xpbd_stiffness_study.hpp"
 
 namespace rice::experiments {
 namespace {

@@ -1,0 +1,217 @@
+// The main job as one command; see reproduce.hpp.
+#include "experiments/cli/reproduce.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "experiments/io/atomic_file.hpp"
+#include "experiments/io/csv_table.hpp"
+#include "experiments/io/progress.hpp"
+
+namespace rice::experiments {
+namespace {
+
+std::string command_text(const std::vector<std::string>& arguments) {
+  std::string text = "rice";
+  for (const std::string& a : arguments) text += " " + a;
+  return text;
+}
+
+/// A digest of the files at `input` (a file, or a folder's files in path order) and their
+/// paths: FNV-1a, 64 bits, written here as the standard library has no stable content hash.
+std::string digest_of(const std::filesystem::path& input) {
+  std::vector<std::filesystem::path> files;
+  std::error_code error;
+  if (std::filesystem::is_directory(input, error)) {
+    for (auto it = std::filesystem::recursive_directory_iterator(input, error);
+         !error && it != std::filesystem::recursive_directory_iterator(); it.increment(error))
+      if (it->is_regular_file()) files.push_back(it->path());
+    std::sort(files.begin(), files.end());
+  } else {
+    files.push_back(input);
+  }
+  std::uint64_t hash = 14695981039346656037ull;
+  const auto mix = [&](const std::string& bytes) {
+    for (const unsigned char c : bytes) hash = (hash ^ c) * 1099511628211ull;
+  };
+  for (const auto& file : files) {
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream bytes;
+    bytes << in.rdbuf();
+    mix(file.string() + (in ? "\n" : " (missing)\n"));
+    mix(bytes.str());
+  }
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+  return text;
+}
+
+/// What makes a step's output current: its command, the binary that ran it and its inputs.
+std::string stamp_of(const ReproduceStep& step) {
+  std::error_code error;
+  const auto binary = std::filesystem::read_symlink("/proc/self/exe", error);
+  const auto time = error ? std::filesystem::file_time_type{} : std::filesystem::last_write_time(binary, error);
+  std::string stamp = command_text(step.arguments) + "\nbinary " + binary.string() + " " +
+                      std::to_string(time.time_since_epoch().count()) + "\n";
+  for (const auto& input : step.inputs) stamp += "input " + input.string() + " " + digest_of(input) + "\n";
+  return stamp;
+}
+
+std::filesystem::path stamp_path(const ReproduceStep& step) { return step.folder / "reproduce.stamp"; }
+
+bool up_to_date(const ReproduceStep& step) {
+  std::ifstream in(stamp_path(step));
+  std::stringstream text;
+  text << in.rdbuf();
+  return in && text.str() == stamp_of(step);
+}
+
+/// The step's files of one extension, sorted, relative to `out`.
+std::vector<std::filesystem::path> files_of(const std::filesystem::path& folder, const std::filesystem::path& out,
+                                            const std::string& extension) {
+  std::vector<std::filesystem::path> found;
+  std::error_code error;
+  for (auto it = std::filesystem::recursive_directory_iterator(folder, error);
+       !error && it != std::filesystem::recursive_directory_iterator(); it.increment(error)) {
+    const auto& path = it->path();
+    if (path.extension() == extension && path.string().find("/frames/") == std::string::npos)
+      found.push_back(std::filesystem::relative(path, out));
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+}  // namespace
+
+std::vector<ReproduceStep> reproduce_steps(const std::filesystem::path& out, bool full,
+                                           const std::filesystem::path& scenes) {
+  // Each step: its title, its command (--out added below), its folder, the step it reads and
+  // the files it reads.
+  const std::vector<ReproduceStep> steps{
+      {"XPBD stiffness: compliance against the analytic stiffness", {"study", "xpbd-stiffness"}, "xpbd-stiffness", "",
+       {}},
+      {"Damped oscillator: XPBD and the reference against the analytic decay", {"study", "oscillator"}, "oscillator",
+       "", {}},
+      {"Convergence: XPBD, XPBD with primal correction and VBD against backward Euler", {"study", "convergence"},
+       "convergence", "", {}},
+      {"Fig. 8: japonica grains of different sizes", {"figure", "8"}, "figure8", "", {}},
+      {"Fig. 9: three cultivars and their dimensions", {"figure", "9"}, "figure9", "", {}},
+      {"Fig. 11: water absorption and damping against soak time", {"figure", "11"}, "figure11", "", {}},
+      {"A grain library (10 japonica grains)", {"grains", "--cultivar", "japonica", "--count", "10"}, "grains", "", {}},
+      {"800 grains poured into a chawan", {"pour"}, "pour", "", {}},
+      {"A heap on a plate, with cohesion",
+       {"pour", "--container", "plate", "--count", "400", "--frames", "180", "--pour-seconds", "3.5", "--spout-height",
+        "0.05"},
+       "heap", "", {}},
+      {"A heap on a plate, without cohesion",
+       {"pour", "--container", "plate", "--count", "400", "--frames", "180", "--pour-seconds", "3.5", "--spout-height",
+        "0.05", "--no-cohesion"},
+       "heap-dry", "", {}},
+      {"Pour: penetration and time against substeps", {"study", "pour-substeps"}, "pour-substeps", "", {}},
+      {"One grain: error and time against substeps, XPBD and VBD", {"study", "grain-substeps"}, "grain-substeps", "",
+       {}},
+      {"Contact: Hertz, a grain on the ground, two grains pressed together", {"study", "contact"}, "contact", "", {}},
+      {"CDRF: the fit against the random-walk reference", {"study", "cdrf"}, "cdrf", "", {}},
+      {"Fig. 10: a clump dropped after three soak times",
+       {"figure", "10", "--scene", (scenes / "drop.toml").string()},
+       "figure10",
+       "",
+       {scenes / "drop.toml"}},
+      {"Table 1 and Figs. 14-17: shari, chawan, onigiri, bunny",
+       full ? std::vector<std::string>{"table", "1", "--scenes", scenes.string(), "--full"}
+            : std::vector<std::string>{"table", "1", "--scenes", scenes.string()},
+       "table1",
+       "",
+       {scenes}},
+      {"A box pressing a clump of grains (scene file)",
+       {"run", (scenes / "press.toml").string()},
+       "press",
+       "",
+       {scenes / "press.toml"}},
+      {"Fig. 13: grains soaked for five times, rendered with the CDRF", {"figure", "13"}, "figure13", "", {}},
+      {"Rendering: error against time for the samplers", {"study", "render"}, "render-study", "", {}},
+      {"The chawan pour's last frame, 1280 x 720 at 64 spp",
+       {"render", "--pour", (out / "pour").string(), "--width", "1280", "--height", "720", "--spp", "64", "--eye", "0",
+        "-0.12", "0.16", "--look-at", "0", "0", "0.03", "--fov", "35"},
+       "render-pour", "pour", {}},
+  };
+  std::vector<ReproduceStep> result;
+  for (ReproduceStep step : steps) {
+    step.folder = out / step.folder;
+    step.arguments.push_back("--out");
+    step.arguments.push_back(step.folder.string());
+    result.push_back(std::move(step));
+  }
+  return result;
+}
+
+void validate(const ReproduceSettings& settings) {
+  const auto steps = reproduce_steps("out", settings.full, settings.scenes);
+  for (const std::string& name : settings.only)
+    if (std::none_of(steps.begin(), steps.end(), [&](const ReproduceStep& s) { return s.folder.filename() == name; })) {
+      std::string names;
+      for (const ReproduceStep& s : steps) names += (names.empty() ? "" : ", ") + s.folder.filename().string();
+      throw std::invalid_argument("reproduce: no step '" + name + "'; steps: " + names);
+    }
+}
+
+void reproduce_command(const ReproduceSettings& settings, const std::filesystem::path& out,
+                       const std::function<int(const std::vector<std::string>&)>& rice) {
+  validate(settings);
+  std::filesystem::create_directories(out);
+  const auto steps = reproduce_steps(out, settings.full, settings.scenes);
+  std::vector<std::string> status(steps.size(), "not run (--only)");
+  for (size_t k = 0; k < steps.size(); ++k) {
+    const ReproduceStep& step = steps[k];
+    const std::string name = step.folder.filename().string();
+    if (!settings.only.empty() && std::find(settings.only.begin(), settings.only.end(), name) == settings.only.end())
+      continue;
+    const bool input_changed = !step.after.empty() && std::any_of(steps.begin(), steps.end(), [&](const ReproduceStep& s) {
+      return s.folder.filename() == step.after && status[&s - steps.data()].starts_with("ran");
+    });
+    if (!settings.force && !input_changed && up_to_date(step)) {
+      status[k] = "up to date (skipped)";
+      std::printf("reproduce %zu/%zu %s: up to date\n", k + 1, steps.size(), name.c_str());
+      continue;
+    }
+    std::printf("reproduce %zu/%zu %s: %s\n", k + 1, steps.size(), name.c_str(), command_text(step.arguments).c_str());
+    std::fflush(stdout);
+    const auto start = std::chrono::steady_clock::now();
+    const int exit_status = rice(step.arguments);
+    if (exit_status != 0)
+      throw std::runtime_error("reproduce: step '" + name + "' failed (exit status " + std::to_string(exit_status) +
+                               "): " + command_text(step.arguments));
+    status[k] = "ran in " + fixed(seconds_since(start), 1) + " s";
+    write_file_atomically(stamp_path(step), stamp_of(step));
+  }
+  // The index: each step's command, status, figures and tables, from what its folder holds.
+  std::string index = "# Results\n\nMade by `rice reproduce" + std::string(settings.full ? " --full" : "") +
+                      "`; each step's folder holds its run_info.txt. Re-running skips the steps that are up to "
+                      "date.\n";
+  for (size_t k = 0; k < steps.size(); ++k) {
+    const ReproduceStep& step = steps[k];
+    index += "\n## " + step.title + "\n\n`" + command_text(step.arguments) + "` — " + status[k] + "\n\n";
+    for (const auto& markdown : files_of(step.folder, out, ".md")) {
+      std::ifstream in(out / markdown);
+      std::stringstream text;
+      text << in.rdbuf();
+      index += text.str() + "\n";
+    }
+    for (const auto& image : files_of(step.folder, out, ".png")) index += "![" + image.string() + "](" + image.string() + ")\n";
+    const auto tables = files_of(step.folder, out, ".csv");
+    if (!tables.empty()) {
+      index += "\nData:";
+      for (const auto& table : tables) index += " [" + table.string() + "](" + table.string() + ")";
+      index += "\n";
+    }
+  }
+  write_file_atomically(out / "index.md", index);
+  std::printf("reproduce: %s\n", (out / "index.md").string().c_str());
+}
+
+}  // namespace rice::experiments

@@ -1,0 +1,155 @@
+// The soft grain's substep study; see grain_substep_study.hpp.
+#include "experiments/studies/grain_substep_study.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <tuple>
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+#include "experiments/io/gnuplot.hpp"
+#include "experiments/io/interrupt.hpp"
+#include "experiments/io/item_loop.hpp"
+#include "experiments/io/atomic_file.hpp"
+#include "experiments/io/csv_table.hpp"
+#include "experiments/io/progress.hpp"
+#include "experiments/io/run_info.hpp"
+#include "grains/grain_generator.hpp"
+#include "xpbd/solver.hpp"
+
+namespace rice::experiments {
+namespace {
+
+struct Run {
+  xpbd::Method method;
+  int substeps, iterations;
+  bool finite = true;
+  double fastest = 0.0;       ///< fastest particle at the end [m/s]
+  double volume_ratio = 0.0;  ///< smallest tet volume over its rest volume at the end
+  double wall = 0.0;          ///< [s per simulated second]
+  xpbd::Positions x;          ///< final positions
+  bool stable() const { return finite && volume_ratio > 0.0 && fastest < 1e-3; }
+};
+
+Run simulate(const grains::Grain& grain, const GrainSubstepStudySettings& s, xpbd::Method method, int substeps,
+             int iterations) {
+  const xpbd::TetMesh mesh{grain.simulation.V, grain.simulation.T};
+  xpbd::Model model;
+  model.particles = xpbd::make_particles(mesh, grain.simulation_density);
+  xpbd::add_neo_hookean_tets(model, mesh, xpbd::lame_from_young_poisson(s.young, 0.3));
+  model.particles.x.col(2).array() -= model.particles.x.col(2).minCoeff();
+  model.ground = xpbd::GroundPlane{.static_friction = 0.5, .dynamic_friction = 0.4};
+  Run run;
+  run.method = method;
+  run.substeps = substeps;
+  run.iterations = iterations;
+  xpbd::Solver solver(model, {.time_step = 1.0 / 60.0, .substeps = substeps, .iterations = iterations,
+                              .method = method, .execution = xpbd::Execution::kSerial});
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    for (int f = 0; f < s.frames; ++f) solver.step();
+  } catch (const xpbd::SimulationError&) {
+    run.finite = false;
+  }
+  run.wall = seconds_since(start) / (s.frames / 60.0);
+  run.x = model.particles.x;
+  if (run.finite) {
+    run.fastest = model.particles.v.rowwise().norm().maxCoeff();
+    run.volume_ratio =
+        (xpbd::tet_volumes(model.particles.x, mesh.T).array() / xpbd::tet_volumes(mesh.V, mesh.T).array()).minCoeff();
+  }
+  return run;
+}
+
+}  // namespace
+
+void validate(const GrainSubstepStudySettings& s) {
+  if (s.substeps.empty() || (s.xpbd_iterations.empty() && s.vbd_iterations.empty()))
+    throw std::invalid_argument("grain-substeps: give substep counts and iteration counts");
+  for (const int n : s.substeps)
+    if (n < 1 || n > 10000) throw std::invalid_argument("grain-substeps: --substeps counts must be in [1, 10000]");
+  for (const auto* list : {&s.xpbd_iterations, &s.vbd_iterations})
+    for (const int k : *list)
+      if (k < 1 || k > 1000) throw std::invalid_argument("grain-substeps: iteration counts must be in [1, 1000]");
+  if (s.frames < 1) throw std::invalid_argument("grain-substeps: --frames must be >= 1");
+  if (!(s.young > 0.0)) throw std::invalid_argument("grain-substeps: --young must be > 0");
+}
+
+void grain_substep_study_command(const GrainSubstepStudySettings& s, const std::filesystem::path& folder) {
+  validate(s);
+  make_output_folder(folder);
+  const auto start = std::chrono::steady_clock::now();
+  grains::GrainRecipe recipe;
+  recipe.cultivar = grains::cultivar_by_name("japonica");
+  const grains::Grain grain = grains::make_grain(recipe, s.seed);
+  struct Job {
+    xpbd::Method method;
+    int substeps, iterations;
+  };
+  std::vector<Job> jobs;
+  for (const int n : s.substeps) {
+    for (const int k : s.xpbd_iterations) jobs.push_back({xpbd::Method::kXpbd, n, k});
+    for (const int k : s.vbd_iterations) jobs.push_back({xpbd::Method::kVbd, n, k});
+  }
+  std::vector<Run> runs(jobs.size());
+  for_each_item("grain-substeps", static_cast<int>(jobs.size()), [&](int j) {
+    runs[j] = simulate(grain, s, jobs[j].method, jobs[j].substeps, jobs[j].iterations);
+  });
+  // The finest vertex-block-descent run (most substeps, then most iterations) is the reference.
+  const Run* reference = nullptr;
+  for (const Run& r : runs)
+    if (r.method == xpbd::Method::kVbd && r.stable() &&
+        (!reference || std::tie(r.substeps, r.iterations) > std::tie(reference->substeps, reference->iterations)))
+      reference = &r;
+  const double length = (grain.simulation.V.colwise().maxCoeff() - grain.simulation.V.colwise().minCoeff()).maxCoeff();
+  CsvTable table({"method", "substeps", "iterations", "h_s", "stable", "fastest_m_per_s", "min_volume_ratio",
+                  "rms_error_rel", "wall_s_per_sim_s"});
+  std::printf("\n%-5s %5s %3s %10s %7s %11s %9s %11s %9s\n", "", "N", "K", "h [s]", "stable", "fastest", "min V/V0",
+              "error/len", "wall [s/s]");
+  int largest_stable[2] = {0, 0};  // fewest substeps that was stable, per method (xpbd, vbd)
+  for (const Run& r : runs) {
+    const double error = reference && r.finite ? std::sqrt((r.x - reference->x).rowwise().squaredNorm().mean()) / length
+                                               : std::numeric_limits<double>::quiet_NaN();
+    table.add_row({xpbd::method_name(r.method), cell(r.substeps), cell(r.iterations), cell(1.0 / (60.0 * r.substeps)),
+                   cell(r.stable() ? 1 : 0), cell(r.fastest), cell(r.volume_ratio), cell(error), cell(r.wall)});
+    std::printf("%-5s %5d %3d %10.2e %7s %11.2e %9.3f %11.2e %9.3f\n", xpbd::method_name(r.method), r.substeps, r.iterations,
+                1.0 / (60.0 * r.substeps), r.stable() ? "yes" : "NO", r.fastest, r.volume_ratio, error, r.wall);
+    int& fewest = largest_stable[r.method == xpbd::Method::kVbd];
+    if (r.stable() && (fewest == 0 || r.substeps < fewest)) fewest = r.substeps;
+  }
+  write_file_atomically(folder / "grain_substeps.csv", table.text());
+  const auto describe = [](int n) { return n == 0 ? std::string("none stable") : "N = " + std::to_string(n); };
+  const std::string title = "A soft grain at rest: XPBD stable from " + describe(largest_stable[0]) +
+                            ", vertex block descent from " + describe(largest_stable[1]) + " substeps per frame";
+  std::printf("\n%s\n", title.c_str());
+  const auto words = [](const std::vector<int>& counts) {
+    std::string list;
+    for (const int k : counts) {
+      if (!list.empty()) list += ' ';
+      list += std::to_string(k);
+    }
+    return list;
+  };
+  // One colour and point type per method and K; the labels are the substep counts N.
+  render_plot(folder, "grain_substeps", csv_plot_header("grain_substeps", 1200, 700) + kLogLogAxes + R"(set xlabel 'wall time per simulated second [s]'
+set ylabel 'RMS distance of the rest state to the finest VBD run / grain length'
+set title ")" + title + R"(" noenhanced
+set key bottom left
+X = ')" + words(s.xpbd_iterations) + R"('
+V = ')" + words(s.vbd_iterations) + R"('
+plot for [i=1:words(X)] 'grain_substeps.csv' using (strcol(1) eq 'xpbd' && $3 == word(X, i)+0 && $5 == 1 ? $9 : 1/0):8:(sprintf('%d', $2)) with labels point pt 7 lc i offset 0.8,0.8 title sprintf('XPBD, K = %s (labels: N)', word(X, i)), \
+     for [i=1:words(V)] 'grain_substeps.csv' using (strcol(1) eq 'vbd' && $3 == word(V, i)+0 && $5 == 1 ? $9 : 1/0):8:(sprintf('%d', $2)) with labels point pt (4 + i) lc (words(X) + i) offset 0.8,-0.8 title sprintf('vertex block descent, K = %s', word(V, i))
+)");
+  stop_point();
+  write_file_atomically(folder / "run_info.txt", run_info({{"study", "grain-substeps"},
+                                                           {"frames", cell(s.frames)},
+                                                           {"young_pa", cell(s.young)},
+                                                           {"seed", cell(static_cast<long>(s.seed))},
+                                                           {"tets", cell(static_cast<long>(grain.simulation.T.rows()))},
+                                                           {"wall_s", cell(seconds_since(start))}}));
+}
+
+}  // namespace rice::experiments

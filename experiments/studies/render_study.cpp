@@ -1,0 +1,210 @@
+// The rendering study; see render_study.hpp.
+#include "experiments/studies/render_study.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+#include "experiments/io/gnuplot.hpp"
+#include "experiments/io/interrupt.hpp"
+#include "experiments/io/atomic_file.hpp"
+#include "experiments/io/csv_table.hpp"
+#include "experiments/io/progress.hpp"
+#include "experiments/io/run_info.hpp"
+#include "experiments/render/render_command.hpp"
+#include "experiments/io/render_images.hpp"
+#include "grains/cultivar.hpp"
+#include "grains/grain_generator.hpp"
+#include "shading/subsurface_bake.hpp"
+
+namespace rice::experiments {
+namespace {
+
+constexpr double kAbsorption = 20.0;  // W [%] of the grains
+
+struct Plate {
+  shading::RenderScene scene;
+  std::vector<int> grain_instances;
+  shading::Lights lights;
+  shading::Camera camera;
+};
+
+// Grains lying flat on a grid, each turned about z and shifted a little, on a grey plate.
+void build_plate(Plate& plate, const RenderStudySettings& settings) {
+  grains::GrainRecipe recipe;
+  recipe.cultivar = grains::cultivar_by_name("japonica");
+  std::vector<int> prototypes;
+  double length = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    const grains::Grain grain = grains::make_grain(recipe, settings.seed * 101 + k, 1.0);
+    prototypes.push_back(add_grain_prototype(plate.scene, grain.render.V, grain.render.F));
+    length = std::max(length, (grain.render.V.colwise().maxCoeff() - grain.render.V.colwise().minCoeff()).maxCoeff());
+  }
+  std::mt19937_64 rng(settings.seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const int columns = static_cast<int>(std::ceil(std::sqrt(settings.grains * 1.5)));
+  const double pitch = 1.05 * length;
+  for (int g = 0; g < settings.grains; ++g) {
+    const double x = (g % columns - 0.5 * (columns - 1)) * pitch, y = (g / columns) * 0.6 * pitch;
+    const Eigen::Affine3d place = Eigen::Translation3d(x + 0.05 * pitch * unit(rng), y, 1.1e-3) *
+                                  Eigen::AngleAxisd(0.4 * (unit(rng) - 0.5), Eigen::Vector3d::UnitZ());
+    plate.grain_instances.push_back(plate.scene.add_instance(prototypes[g % prototypes.size()], place, 0));
+  }
+  add_ground(plate.scene, -0.1, -0.1, 0.1, 0.1, 0.0, 1);
+  plate.scene.commit();
+  plate.lights.suns.push_back({.direction = Eigen::Vector3f(0.3f, 0.5f, 0.8f), .irradiance = shading::Color::Constant(3.0f)});
+  plate.lights.environment.constant = shading::Color::Constant(0.3f);
+  const double rows = std::ceil(static_cast<double>(settings.grains) / columns);
+  const Eigen::Vector3d centre(0.0, 0.5 * (rows - 1) * 0.6 * pitch, 1e-3);
+  plate.camera.target = centre;
+  plate.camera.vertical_fov_degrees = 30.0;
+  const double reach = 0.75 * columns * pitch / std::tan(15.0 * std::numbers::pi / 180.0);
+  plate.camera.position = centre + reach * Eigen::Vector3d(0.0, -std::cos(0.7), std::sin(0.7));
+}
+
+}  // namespace
+
+void validate(const RenderStudySettings& s) {
+  if (s.width < 8 || s.height < 8 || s.width > 4096 || s.height > 4096)
+    throw std::invalid_argument("study render: --width and --height must be in [8, 4096]");
+  if (s.grains < 1 || s.grains > 10000) throw std::invalid_argument("study render: --grains must be in [1, 10000]");
+  if (s.samples.empty()) throw std::invalid_argument("study render: give at least one --samples count");
+  for (const int n : s.samples)
+    if (n < 1 || n > 1 << 16) throw std::invalid_argument("study render: --samples counts must be in [1, 65536]");
+  if (s.reference_spp < 1 || s.reference_spp > 1 << 20)
+    throw std::invalid_argument("study render: --reference-spp must be in [1, 1048576]");
+  if (s.photons.size() < 2) throw std::invalid_argument("study render: give at least two --photons counts");
+  for (const long long n : s.photons)
+    if (n < 1000 || n > 1'000'000'000LL) throw std::invalid_argument("study render: --photons must be in [1000, 1e9]");
+  if (s.bake_render_spp < 1 || s.bake_render_spp > 1 << 16)
+    throw std::invalid_argument("study render: --bake-spp must be in [1, 65536]");
+}
+
+void render_study_command(const RenderStudySettings& settings, const std::filesystem::path& folder) {
+  validate(settings);
+  const auto start = std::chrono::steady_clock::now();
+  Plate plate;
+  build_plate(plate, settings);
+  make_output_folder(folder);
+  const shading::CdrfTable cdrf(513, 513);
+  std::vector<shading::Material> materials = {
+      rice_material(kAbsorption), {.kind = shading::MaterialKind::kDiffuse, .albedo = shading::Color::Constant(0.5f)}};
+  auto run = [&](const std::vector<shading::Material>& m, shading::SamplerKind sampler, int spp, double& seconds) {
+    shading::RenderStats stats;
+    const shading::RenderSettings render{.width = settings.width, .height = settings.height, .samples_per_pixel = spp,
+                                         .sampler = sampler, .seed = settings.seed};
+    shading::Image image = shading::render(plate.scene, m, plate.lights, plate.camera, cdrf, render, &stats, {},
+                                           stop_requested);
+    stop_point();
+    seconds = stats.seconds;
+    return image;
+  };
+
+  const int runs = 1 + 3 * static_cast<int>(settings.samples.size()) + 2 * static_cast<int>(settings.photons.size()) + 1;
+  Progress progress("study render: runs", runs);
+  int done = 0;
+  double seconds = 0.0;
+  const shading::Image reference = run(materials, shading::SamplerKind::kSobol, settings.reference_spp, seconds);
+  progress.update(++done);
+  write_png(folder / "reference_cdrf.png", tone_map(reference, 0.0));
+  write_exr(folder / "reference_cdrf.exr", reference);
+
+  CsvTable table({"method", "knob", "seconds", "rmse", "relative_rmse"});
+  double mean = 0.0;
+  for (const auto& p : reference.pixels) mean += p.mean() / reference.pixels.size();
+  const std::vector<std::pair<const char*, shading::SamplerKind>> samplers = {
+      {"independent", shading::SamplerKind::kIndependent},
+      {"stratified", shading::SamplerKind::kStratified},
+      {"sobol", shading::SamplerKind::kSobol}};
+  std::vector<std::vector<double>> errors(samplers.size());
+  for (size_t k = 0; k < samplers.size(); ++k) {
+    for (const int spp : settings.samples) {
+      const shading::Image image = run(materials, samplers[k].second, spp, seconds);
+      const double rmse = shading::rms_difference(image, reference);
+      errors[k].push_back(rmse);
+      table.add_row({samplers[k].first, cell(spp), cell(seconds), cell(rmse), cell(rmse / mean)});
+      progress.update(++done);
+    }
+  }
+
+  // The random-walk reference at growing photon counts; the CDRF against the best of them.
+  const std::vector<shading::Medium> media(plate.grain_instances.size(), grain_medium(kAbsorption));
+  std::vector<shading::Material> reference_materials = materials;
+  reference_materials[0].kind = shading::MaterialKind::kSubsurfaceReference;
+  std::vector<shading::Image> baked_images;
+  std::vector<double> baked_seconds;
+  for (const long long photons : settings.photons) {
+    shading::BakeStats bake;
+    shading::bake_subsurface(plate.scene, plate.grain_instances, media, plate.lights,
+                             {.photons_per_light = photons, .seed = settings.seed}, &bake);
+    progress.update(++done);
+    stop_point();
+    baked_images.push_back(run(reference_materials, shading::SamplerKind::kSobol, settings.bake_render_spp, seconds));
+    baked_seconds.push_back(bake.seconds + seconds);
+    progress.update(++done);
+  }
+  const shading::Image& best = baked_images.back();
+  write_png(folder / "reference_random_walk.png", tone_map(best, 0.0));
+  write_exr(folder / "reference_random_walk.exr", best);
+  for (size_t k = 0; k + 1 < baked_images.size(); ++k) {
+    const double rmse = shading::rms_difference(baked_images[k], best);
+    table.add_row({"random-walk", cell(static_cast<long>(settings.photons[k])), cell(baked_seconds[k]), cell(rmse),
+                   cell(rmse / mean)});
+  }
+  const shading::Image cdrf_image = run(materials, shading::SamplerKind::kSobol, settings.bake_render_spp, seconds);
+  progress.update(++done);
+  progress.finish();
+  const double cdrf_error = shading::rms_difference(cdrf_image, best);
+  table.add_row({"cdrf-vs-random-walk", cell(settings.bake_render_spp), cell(seconds), cell(cdrf_error),
+                 cell(cdrf_error / mean)});
+  write_file_atomically(folder / "render_study.csv", table.text());
+
+  // Equal error: the Sobol count whose error matches the largest independent count's, by
+  // log–log interpolation along the Sobol curve.
+  const double target = errors[0].back();
+  double equal_spp = settings.samples.back();
+  for (size_t i = 0; i + 1 < settings.samples.size(); ++i) {
+    const double e0 = errors[2][i], e1 = errors[2][i + 1];
+    if (e0 >= target && e1 <= target) {
+      const double t = std::log(e0 / target) / std::log(e0 / e1);
+      equal_spp = settings.samples[i] * std::pow(static_cast<double>(settings.samples[i + 1]) / settings.samples[i], t);
+      break;
+    }
+  }
+  render_plot(folder, "render_study", R"(set terminal pngcairo size 900,600
+set output 'render_study.png'
+set datafile separator ','
+set logscale xy
+set format x '10^{%L}'
+set format y '10^{%L}'
+set xlabel 'wall time [s] (log)'
+set ylabel 'RMSE against the reference image (log)'
+set title 'Sobol reaches the error of )" + std::to_string(settings.samples.back()) + R"( independent samples at )" +
+                                     fixed(equal_spp, 0) + R"(; the CDRF sits )" + fixed(100 * cdrf_error / mean, 0) +
+                                     R"(% RMS from the random walk'
+set key left bottom
+plot for [m in 'independent stratified sobol'] 'render_study.csv' using ((strcol(1) eq m) ? $3 : 1/0):4 \
+       with linespoints pt 7 title m.' (CDRF, spp)', \
+     '' using ((strcol(1) eq 'random-walk') ? $3 : 1/0):4 with linespoints pt 5 lw 2 title 'random walk (photons)', \
+     '' using ((strcol(1) eq 'cdrf-vs-random-walk') ? $3 : 1/0):4 with points pt 9 ps 2 title 'CDRF against the random walk'
+)");
+  write_file_atomically(folder / "run_info.txt",
+                        run_info({{"study", "render"},
+                                  {"width", cell(settings.width)},
+                                  {"height", cell(settings.height)},
+                                  {"grains", cell(settings.grains)},
+                                  {"reference_spp", cell(settings.reference_spp)},
+                                  {"equal_error_sobol_spp", cell(equal_spp)},
+                                  {"cdrf_vs_random_walk_relative_rmse", cell(cdrf_error / mean)},
+                                  {"seed", cell(static_cast<long>(settings.seed))},
+                                  {"wall_s", cell(seconds_since(start))}}));
+  std::printf("study render: Sobol matches %d independent samples at %.0f; CDRF vs random walk %.1f%% RMS\n",
+              settings.samples.back(), equal_spp, 100 * cdrf_error / mean);
+}
+
+}  // namespace rice::experiments

@@ -1,0 +1,381 @@
+// Scene files (experiments/scene_file.hpp): every shipped scene parses; an empty file gives
+// `rice pour`'s defaults; each kind of mistake stops the read with a message naming the file,
+// the line and the key; `--set` overrides; `rice run` on a short variant writes the run with a
+// copy of its scene, and a bad scene writes nothing.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "experiments/figures/figure10.hpp"
+#include "experiments/pile/pile_measures.hpp"
+#include "experiments/scene/scene_file.hpp"
+#include "experiments/scene/scene_run.hpp"
+#include "experiments/figures/table1.hpp"
+#include "tests/xpbd/grain_fixtures.hpp"
+
+#ifndef RICE_SCENES_DIR
+#error "RICE_SCENES_DIR must name experiments/scenes (set by tests/CMakeLists.txt)"
+#endif
+
+namespace rice::experiments {
+namespace {
+
+TEST(SceneFile, EveryShippedSceneParses) {
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(RICE_SCENES_DIR)) {
+    if (entry.path().extension() != ".toml") continue;
+    ++count;
+    SCOPED_TRACE(entry.path().string());
+    const SceneDescription scene = read_scene_file(entry.path());
+    EXPECT_EQ(scene.name, entry.path().stem().string());
+    EXPECT_FALSE(scene.description.empty());
+    EXPECT_NO_THROW(validate(scene.pour));
+  }
+  EXPECT_GE(count, 2);
+}
+
+TEST(SceneFile, AnEmptyFileIsThePourWithItsDefaults) {
+  const SceneDescription scene = parse_scene("", "dir/empty.toml");
+  EXPECT_EQ(scene.name, "empty");
+  const PourSettings defaults;
+  EXPECT_EQ(scene.pour.count, defaults.count);
+  EXPECT_EQ(scene.pour.frames, defaults.frames);
+  EXPECT_EQ(scene.pour.container, defaults.container);
+  EXPECT_EQ(scene.pour.static_friction, defaults.static_friction);
+  EXPECT_EQ(scene.pour.cohesion, defaults.cohesion);
+}
+
+TEST(SceneFile, KeysSetTheSettings) {
+  const SceneDescription scene = parse_scene(R"([grains]
+count = 12
+body = "soft"
+young_pa = 2e5
+[solver]
+method = "vbd"
+frames = 7
+[container]
+kind = "plate"
+[effects]
+friction = false
+cohesion = false
+damping = false
+)", "s.toml");
+  EXPECT_EQ(scene.pour.count, 12);
+  EXPECT_EQ(scene.pour.body, xpbd::BodyKind::kSoft);
+  EXPECT_EQ(scene.pour.young, 2e5);
+  EXPECT_TRUE(scene.pour.vertex_block_descent);
+  EXPECT_EQ(scene.pour.frames, 7);
+  EXPECT_EQ(scene.pour.container, Container::kPlate);
+  EXPECT_EQ(scene.pour.static_friction, 0.0);
+  EXPECT_EQ(scene.pour.dynamic_friction, 0.0);
+  EXPECT_FALSE(scene.pour.cohesion);
+  EXPECT_FALSE(scene.pour.damping);
+}
+
+/// The message of reading `text` as "bad.toml" (empty when it is read).
+std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
+  try {
+    parse_scene(text, "bad.toml", overrides);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SceneFile, MistakesNameTheFileTheLineAndTheKey) {
+  struct Case {
+    const char* text;
+    const char* message;  ///< the start of the expected message
+  };
+  const Case cases[] = {
+      {"[grains]\ncount = 10\ncont = 3\n", "bad.toml:3: [grains] has no key 'cont'"},
+      {"[grain]\ncount = 10\n", "bad.toml:1: 'grain' is not a section"},
+      {"count = 10\n", "bad.toml:1: 'count' is not a section"},
+      {"[grains]\ncount = \"many\"\n", "bad.toml:2: [grains] count = \"many\": expected an integer in [1, 100000]"},
+      {"[grains]\n\ncount = 0\n", "bad.toml:3: [grains] count = 0: expected an integer in [1, 100000]"},
+      {"[grains]\ncount = 2.5\n", "bad.toml:2: [grains] count = 2.5: expected an integer"},
+      {"[grains]\npoisson = 0.5\n", "bad.toml:2: [grains] poisson = 0.5: expected a number in (-1, 0.5)"},
+      {"[grains]\ncultivar = \"basmati\"\n", "bad.toml:2: [grains] cultivar = \"basmati\": expected one of 'japonica'"},
+      {"[solver]\nfps = nan\n", "bad.toml:2: [solver] fps = nan: expected a number in (0, 1000]"},
+      {"[solver]\nmethod = \"vbd\"\n", "bad.toml:2: [solver] method = \"vbd\": expected 'xpbd' for rigid grains"},
+      {"[effects]\nstatic_friction = 0.3\ndynamic_friction = 0.4\n",
+       "bad.toml:3: [effects] dynamic_friction = 0.4: expected at most static_friction"},
+      {"[effects]\nstatic_friction = 0.3\n", "bad.toml:2: [effects] static_friction = 0.3: expected at least dynamic_friction"},
+      {"[effects]\ncohesion = 1\n", "bad.toml:2: [effects] cohesion = 1: expected true or false"},
+      {"[emitter]\nkind = \"stream\"\n", "bad.toml:2: [emitter] kind = \"stream\": expected one of 'spout'"},
+      {"[grains]\ncount = = 3\n", "bad.toml:2: "},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.text);
+    const std::string message = error_of(c.text);
+    EXPECT_TRUE(message.starts_with(c.message)) << message;
+  }
+}
+
+TEST(SceneFile, CollidersHaveTheirShapesSizesAndKeyframes) {
+  const SceneDescription scene = parse_scene(R"([effects]
+static_friction = 0.6
+dynamic_friction = 0.5
+[[colliders]]
+shape = "plane"
+position_m = [0.0, 0.0, 0.1]
+axis = [1.0, 0.0, 0.0]
+angle_deg = 180
+[[colliders]]
+shape = "box"
+half_extents_m = [0.03, 0.02, 0.005]
+static_friction = 0.2
+keyframes = [ { time_s = 0.0, position_m = [0.0, 0.0, 0.08] },
+              { time_s = 1.5, position_m = [0.0, 0.0, 0.01], axis = [0.0, 0.0, 1.0], angle_deg = 90 } ]
+[[colliders]]
+shape = "capsule"
+radius_m = 0.01
+half_length_m = 0.03
+)", "s.toml");
+  ASSERT_EQ(scene.pour.colliders.size(), 3u);
+  const xpbd::Collider& lid = scene.pour.colliders[0];
+  EXPECT_EQ(lid.shape, xpbd::ColliderShape::kHalfSpace);
+  EXPECT_NEAR((lid.motion[0].rotation * xpbd::Vec3::UnitZ() + xpbd::Vec3::UnitZ()).norm(), 0.0, 1e-12);  // facing down
+  EXPECT_EQ(lid.static_friction, 0.6);  // the grains' by default
+  const xpbd::Collider& hand = scene.pour.colliders[1];
+  EXPECT_EQ(hand.shape, xpbd::ColliderShape::kBox);
+  EXPECT_EQ(hand.half_extents, xpbd::Vec3(0.03, 0.02, 0.005));
+  EXPECT_EQ(hand.static_friction, 0.2);
+  EXPECT_EQ(hand.dynamic_friction, 0.2);  // capped by its own static friction
+  ASSERT_EQ(hand.motion.size(), 2u);
+  EXPECT_EQ(hand.motion[1].time, 1.5);
+  EXPECT_NEAR((hand.motion[1].rotation * xpbd::Vec3::UnitX() - xpbd::Vec3::UnitY()).norm(), 0.0, 1e-12);
+  EXPECT_EQ(scene.pour.colliders[2].half_length, 0.03);
+  EXPECT_NO_THROW(validate(scene.pour));
+
+  const std::string box = "[[colliders]]\nshape = \"box\"\n";
+  EXPECT_TRUE(error_of("[[colliders]]\nradius_m = 1\n").starts_with("bad.toml:1: [colliders.1] needs a shape"));
+  EXPECT_TRUE(error_of("[[colliders]]\nshape = \"cone\"\n").starts_with("bad.toml:2: [colliders.1] shape = \"cone\""));
+  EXPECT_TRUE(error_of("[[colliders]]\nshape = \"sphere\"\n").starts_with("bad.toml:1: [colliders.1] a sphere needs radius_m"));
+  EXPECT_TRUE(error_of(box + "half_extents_m = [1, 2]\n").starts_with("bad.toml:3: [colliders.1] half_extents_m = [ 1, 2 ]: expected three numbers"));
+  EXPECT_TRUE(error_of(box + "half_extents_m = [1, 2, 3]\nradius_m = 1\n").starts_with("bad.toml:4: [colliders.1] has no key 'radius_m'"));
+  EXPECT_TRUE(error_of(box + "half_extents_m = [1, 2, 3]\nkeyframes = [ { time_s = 1.0 }, { time_s = 0.5 } ]\n")
+                  .starts_with("bad.toml:4: [colliders.1.keyframes.2] time_s = 0.5: expected a time in s after the previous"));
+  EXPECT_TRUE(error_of(box + "half_extents_m = [1, 2, 3]\nkeyframes = 3\n").starts_with("bad.toml:4: [colliders.1] keyframes = 3: expected a list"));
+  EXPECT_TRUE(error_of("colliders = 3\n").starts_with("bad.toml:1: 'colliders' must be a list of [[colliders]] tables"));
+}
+
+TEST(SceneFile, MeshCollidersAndTheFillReadTheirFilesFromTheScenesFolder) {
+  // Paths are from the scene file's folder; the file is read, checked closed and scaled.
+  const std::string scene_path = std::string(RICE_SCENES_DIR) + "/test.toml";
+  const SceneDescription scene = parse_scene(R"([emitter]
+kind = "fill"
+mould = 2
+round_s = 0.25
+[[colliders]]
+shape = "box"
+half_extents_m = [0.01, 0.01, 0.01]
+[[colliders]]
+shape = "mesh"
+file = "meshes/shari_mould.obj"
+scale = 2
+hollow = true
+grid_spacing_m = 5e-4
+removed_at_s = 4.5
+)", scene_path);
+  ASSERT_EQ(scene.pour.mesh_colliders.size(), 1u);
+  ASSERT_EQ(scene.pour.colliders.size(), 1u);
+  const MeshCollider& mould = scene.pour.mesh_colliders[0];
+  EXPECT_TRUE(mould.hollow);
+  EXPECT_EQ(mould.grid_spacing, 5e-4);
+  EXPECT_EQ(mould.collider.removal_time, 4.5);
+  EXPECT_NEAR(mould.mesh.V.col(2).maxCoeff(), 2 * 0.04, 1e-9);  // the shari mould is 4 cm tall
+  EXPECT_EQ(scene.pour.fill_mould, 0);
+  EXPECT_EQ(scene.pour.fill_round_seconds, 0.25);
+  EXPECT_TRUE(std::isinf(scene.pour.colliders[0].removal_time));
+  EXPECT_NO_THROW(validate(scene.pour));
+
+  const auto error_at = [&](const std::string& text) {
+    try {
+      parse_scene(text, scene_path);
+    } catch (const SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string mesh = "[[colliders]]\nshape = \"mesh\"\n";
+  EXPECT_NE(error_at(mesh).find("[colliders.1] needs file"), std::string::npos) << error_at(mesh);
+  EXPECT_NE(error_at(mesh + "file = \"meshes/none.obj\"\n").find(":3: [colliders.1] file = \"meshes/none.obj\": expected a mesh file that exists"),
+            std::string::npos);
+  // An open mesh (a tetrahedron without one face) is refused naming its defect.
+  const std::filesystem::path open = std::filesystem::path(RICE_TEST_SCRATCH) / "open_mesh.obj";
+  std::ofstream(open) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n";
+  EXPECT_NE(error_at(mesh + "file = \"" + open.string() + "\"\n").find("expected a closed triangle mesh"), std::string::npos);
+  EXPECT_NE(error_at("[[colliders]]\nshape = \"box\"\nhalf_extents_m = [1, 1, 1]\nfile = \"x.obj\"\n").find("has no key 'file'"),
+            std::string::npos);
+  EXPECT_NE(error_at("[[colliders]]\nshape = \"plane\"\nremoved_at_s = 0\n").find("removed_at_s = 0: expected a time in (0, 1e4] s"),
+            std::string::npos);
+  EXPECT_NE(error_at("[emitter]\nkind = \"fill\"\n").find("[emitter] kind = 'fill' needs mould"), std::string::npos);
+  EXPECT_NE(error_at("[emitter]\nkind = \"fill\"\nmould = 1\n[[colliders]]\nshape = \"plane\"\n")
+                .find("[emitter] mould = 1: expected the number of a [[colliders]] with shape = 'mesh' and hollow = true"),
+            std::string::npos);
+  EXPECT_NE(error_at("[emitter]\nkind = \"fill\"\nmould = 1\nheight_m = 0.1\n" + mesh + "file = \"meshes/shari_mould.obj\"\nhollow = true\n")
+                .find("[emitter] has no key 'height_m'"),
+            std::string::npos);
+}
+
+TEST(SceneFile, RenderSectionSetsTheImageAndTheCamera) {
+  const SceneDescription scene = parse_scene(R"([render]
+width = 320
+height = 200
+samples_per_pixel = 8
+eye_m = [0.0, -0.2, 0.1]
+look_at_m = [0.0, 0.0, 0.02]
+fov_deg = 40
+)", "s.toml");
+  ASSERT_TRUE(scene.render);
+  EXPECT_EQ(scene.render->width, 320);
+  EXPECT_EQ(scene.render->samples_per_pixel, 8);
+  EXPECT_EQ(*scene.render->eye, xpbd::Vec3(0.0, -0.2, 0.1));
+  EXPECT_EQ(scene.render->vertical_fov_degrees, 40.0);
+  EXPECT_FALSE(parse_scene("", "s.toml").render);  // no section, no render
+  EXPECT_TRUE(error_of("[render]\neye_m = [0, 0, 1]\n").starts_with("bad.toml:1: [render] give both eye_m and look_at_m"));
+  EXPECT_TRUE(error_of("[grains]\nbody = \"soft\"\n[render]\nwidth = 64\n")
+                  .starts_with("bad.toml:3: [render] is for rigid grains"));
+  EXPECT_TRUE(error_of("[render]\nwidth = 8\n").starts_with("bad.toml:2: [render] width = 8: expected an integer in [16, 16384]"));
+}
+
+TEST(SceneFile, OverridesReplaceOrAddKeysAndAreCheckedTheSameWay) {
+  const SceneDescription scene = parse_scene("[grains]\ncount = 800\n", "s.toml", {"grains.count=40", "solver.frames=5"});
+  EXPECT_EQ(scene.pour.count, 40);
+  EXPECT_EQ(scene.pour.frames, 5);
+  EXPECT_TRUE(error_of("", {"grains.count=-1"}).starts_with("--set grains.count=-1:1: [grains] count = -1: expected"));
+  EXPECT_TRUE(error_of("", {"grains.colour=2"}).starts_with("--set grains.colour=2:1: [grains] has no key 'colour'"));
+  EXPECT_TRUE(error_of("", {"count=40"}).starts_with("--set count=40: expected section.key=value"));
+  EXPECT_TRUE(error_of("", {"grain.count=40"}).starts_with("--set grain.count=40: there is no section 'grain'"));
+}
+
+TEST(SceneFile, RunWritesTheRunWithItsSceneAndABadSceneWritesNothing) {
+  const std::filesystem::path out = std::filesystem::path(RICE_TEST_SCRATCH) / "scene-run";
+  std::filesystem::remove_all(out);
+  const std::filesystem::path chawan = std::filesystem::path(RICE_SCENES_DIR) / "chawan.toml";
+  EXPECT_THROW(run_scene_command(chawan, {"grains.count=0"}, out), SceneError);
+  EXPECT_FALSE(std::filesystem::exists(out));
+  run_scene_command(chawan, {"grains.count=20", "grains.variants=2", "solver.frames=3", "render.width=32",
+                             "render.height=24", "render.samples_per_pixel=1", "render.every_frame=true"},
+                    out);
+  for (const char* file : {"scene.toml", "stats.csv", "run_info.txt", "grains.csv", "render/render.png",
+                           "render_frames/frame_0001.png", "render_frames/frame_0002.png"})
+    EXPECT_TRUE(std::filesystem::exists(out / file)) << file;
+  // Every frame through the last one's camera: the last of them is the last frame's image.
+  const auto bytes = [](const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_EQ(bytes(out / "render_frames" / "frame_0003.png"), bytes(out / "render" / "render.png"));
+  // The copy reads back as the scene it ran.
+  const SceneDescription copy = read_scene_file(out / "scene.toml");
+  EXPECT_EQ(copy.pour.count, 800);  // the file's own value; the overrides are listed below it
+}
+
+TEST(SceneFile, GrainsThatMissTheBowlStayOutOfItsMeasures) {
+  // A bowl 1.2 cm across under a spout 4 cm wide: most grains miss it and fall on, metres
+  // down by the end; the bowl's section and packing cover those in it (the section of all of
+  // them once asked for a picture metres wide and stopped the run).
+  const std::filesystem::path out = std::filesystem::path(RICE_TEST_SCRATCH) / "scene-overflow";
+  std::filesystem::remove_all(out);
+  const SceneResult result =
+      run_scene_command(std::filesystem::path(RICE_SCENES_DIR) / "chawan.toml",
+                        {"grains.count=30", "grains.variants=2", "solver.frames=20", "container.scale=0.1",
+                         "render.width=16", "render.height=16", "render.samples_per_pixel=1"},
+                        out);
+  EXPECT_LT(result.pour.in_container, 30);
+  EXPECT_GE(result.pour.in_container, 0);
+  EXPECT_TRUE(std::filesystem::exists(out / "render" / "render.png"));
+}
+
+TEST(SceneFile, TheMouldScenesRunShortAndEveryGrainFindsRoom) {
+  // Short variants of the shari and the bunny: the fill puts every grain in the mould in its
+  // first round; grains start inside it (the highest centre below the mould's top).
+  for (const auto& [name, mould_top] : {std::pair("shari", 0.04), std::pair("bunny", 0.0497 + 0.05)}) {
+    SCOPED_TRACE(name);
+    const std::filesystem::path out = std::filesystem::path(RICE_TEST_SCRATCH) / (std::string("scene-") + name);
+    std::filesystem::remove_all(out);
+    const PourResult result = run_scene_command(
+        std::filesystem::path(RICE_SCENES_DIR) / (std::string(name) + ".toml"),
+        {"grains.count=40", "grains.variants=2", "solver.frames=3", "render.width=32", "render.height=24",
+         "render.samples_per_pixel=1"},
+        out).pour;
+    EXPECT_GT(result.top, 0.0);
+    EXPECT_LT(result.top, mould_top);
+    std::ifstream info(out / "run_info.txt");
+    const std::string text((std::istreambuf_iterator<char>(info)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("grains_placed: 40\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("fill_rounds: 1\n"), std::string::npos) << text;
+  }
+}
+
+TEST(PileMeasures, FootprintRadiusHoldsTheFractionOfCentresAboutTheirMean) {
+  // Ten centres on a circle of 2 cm about (1, 1), one at its middle, heights anything.
+  std::vector<xpbd::Vec3> centres{xpbd::Vec3(1.0, 1.0, 0.3)};
+  for (int k = 0; k < 10; ++k) {
+    const double t = 2.0 * M_PI * k / 10.0;
+    centres.emplace_back(1.0 + 0.02 * std::cos(t), 1.0 + 0.02 * std::sin(t), 0.01 * k);
+  }
+  EXPECT_NEAR(footprint_radius(centres, 0.9), 0.02, 1e-12);
+  EXPECT_NEAR(footprint_radius(centres, 1.0 / 11.0), 0.0, 1e-12);  // the middle one alone
+  EXPECT_EQ(footprint_radius({}), 0.0);
+}
+
+TEST(PileMeasures, ClustersAreTheGroupsOfGrainsWhoseSpheresTouch) {
+  // Three grain-sized bodies in a row 50 µm apart and a fourth far away: two groups at a gap
+  // of 0.1 mm, four at 10 µm.
+  xpbd::Model model;
+  for (int g = 0; g < 3; ++g)
+    xpbd::testing::add_grain(model, xpbd::BodyKind::kRigid, xpbd::Vec3(0.0, g * (xpbd::testing::kGrainWidth + 5e-5), 0.0));
+  xpbd::testing::add_grain(model, xpbd::BodyKind::kSoft, xpbd::Vec3(0.1, 0.0, 0.0));
+  EXPECT_EQ(count_clusters(model, 1e-4), 2);
+  EXPECT_EQ(count_clusters(model, 1e-5), 4);
+}
+
+TEST(Figure10, RunsTheDropSceneAtEachSoakTimeAndTabulatesThePiles) {
+  const std::filesystem::path out = std::filesystem::path(RICE_TEST_SCRATCH) / "figure10";
+  std::filesystem::remove_all(out);
+  Figure10Settings s;
+  s.scene = std::filesystem::path(RICE_SCENES_DIR) / "drop.toml";
+  s.soak_minutes = {15.0, 240.0};
+  s.overrides = {"grains.count=12", "grains.variants=2", "solver.frames=4", "render.width=32", "render.height=24",
+                 "render.samples_per_pixel=1"};
+  figure10_command(s, out);
+  std::ifstream table(out / "figure10.csv");
+  std::string line;
+  int rows = 0;
+  while (std::getline(table, line)) ++rows;
+  EXPECT_EQ(rows, 3);  // header and one row per soak time
+  EXPECT_TRUE(std::filesystem::exists(out / "soak_240min" / "scene.toml"));
+}
+
+TEST(Table1, RunsTheFourScenesAndSetsTheirTimesBesideThePapers) {
+  const std::filesystem::path out = std::filesystem::path(RICE_TEST_SCRATCH) / "table1";
+  std::filesystem::remove_all(out);
+  Table1Settings s;
+  s.scenes = RICE_SCENES_DIR;
+  s.overrides = {"grains.count=0"};
+  EXPECT_THROW(table1_command(s, out), SceneError);
+  EXPECT_FALSE(std::filesystem::exists(out));  // a bad scene: nothing run, nothing written
+  s.overrides = {"grains.count=12", "grains.variants=2", "solver.frames=3", "render.width=32", "render.height=24",
+                 "render.samples_per_pixel=1"};
+  table1_command(s, out);
+  std::ifstream table(out / "table1.csv");
+  std::string line;
+  std::vector<std::string> rows;
+  while (std::getline(table, line)) rows.push_back(line);
+  ASSERT_EQ(rows.size(), 5u);  // the header and shari, chawan, onigiri, bunny
+  EXPECT_TRUE(rows[1].starts_with("14,shari,12,270,3,"));
+  EXPECT_TRUE(rows[4].starts_with("17,bunny,12,3600,3,"));
+  for (const std::string& row : rows) EXPECT_EQ(std::count(row.begin(), row.end(), ','), 14) << row;
+  EXPECT_TRUE(std::filesystem::exists(out / "table1.md"));
+  EXPECT_TRUE(std::filesystem::exists(out / "onigiri" / "render" / "render.png"));
+}
+
+}  // namespace
+}  // namespace rice::experiments
