@@ -14,7 +14,8 @@
 #include <random>
 #include <vector>
 
-#include "experiments/render/render_command.hpp"
+#include "experiments/render/scene_pieces.hpp"
+#include "shading/renderer.hpp"
 #include "grains/cultivar.hpp"
 #include "grains/grain_generator.hpp"
 #include "grains/random_stream.hpp"

@@ -1,10 +1,14 @@
 // The `rice` command line: every subcommand and option, each number with the range it must
 // lie in, so that a bad number (NaN, an infinity, out of range) is refused before any work
-// with a message that names the option. The option sweep test (tests/experiments) walks
-// every option of every subcommand through it.
+// with a message that names the option. Each family of subcommands is registered in its own
+// file (command_family.hpp). The option sweep test (tests/experiments/cli) walks every option
+// of every subcommand through it.
 #pragma once
 
 #include <memory>
+#include <vector>
+
+#include "experiments/cli/command_family.hpp"
 
 namespace CLI {
 class App;
@@ -37,8 +41,9 @@ class CommandLine {
   void run() const;
 
  private:
-  struct Commands;
-  std::unique_ptr<Commands> commands_;
+  std::unique_ptr<CLI::App> app_;
+  int threads_ = 0;
+  std::vector<std::unique_ptr<CommandFamily>> families_;
 };
 
 }  // namespace rice::experiments

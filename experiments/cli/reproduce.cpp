@@ -90,6 +90,11 @@ std::vector<std::filesystem::path> files_of(const std::filesystem::path& folder,
 
 std::vector<ReproduceStep> reproduce_steps(const std::filesystem::path& out, bool full,
                                            const std::filesystem::path& scenes) {
+  // 400 grains poured slowly from high up onto a plate, with and without cohesion.
+  const std::vector<std::string> heap{"run", (scenes / "heap.toml").string(), "--set", "grains.count=400", "--set",
+                                      "solver.frames=180", "--set", "emitter.seconds=3.5", "--set", "emitter.height_m=0.05"};
+  std::vector<std::string> heap_dry = heap;
+  heap_dry.insert(heap_dry.end(), {"--set", "effects.cohesion=false"});
   // Each step: its title, its command (--out added below), its folder, the step it reads and
   // the files it reads.
   const std::vector<ReproduceStep> steps{
@@ -103,15 +108,8 @@ std::vector<ReproduceStep> reproduce_steps(const std::filesystem::path& out, boo
       {"Fig. 9: three cultivars and their dimensions", {"figure", "9"}, "figure9", "", {}},
       {"Fig. 11: water absorption and damping against soak time", {"figure", "11"}, "figure11", "", {}},
       {"A grain library (10 japonica grains)", {"grains", "--cultivar", "japonica", "--count", "10"}, "grains", "", {}},
-      {"800 grains poured into a chawan", {"pour"}, "pour", "", {}},
-      {"A heap on a plate, with cohesion",
-       {"pour", "--container", "plate", "--count", "400", "--frames", "180", "--pour-seconds", "3.5", "--spout-height",
-        "0.05"},
-       "heap", "", {}},
-      {"A heap on a plate, without cohesion",
-       {"pour", "--container", "plate", "--count", "400", "--frames", "180", "--pour-seconds", "3.5", "--spout-height",
-        "0.05", "--no-cohesion"},
-       "heap-dry", "", {}},
+      {"A heap on a plate, with cohesion", heap, "heap", "", {scenes / "heap.toml"}},
+      {"A heap on a plate, without cohesion", heap_dry, "heap-dry", "", {scenes / "heap.toml"}},
       {"Pour: penetration and time against substeps", {"study", "pour-substeps"}, "pour-substeps", "", {}},
       {"One grain: error and time against substeps, XPBD and VBD", {"study", "grain-substeps"}, "grain-substeps", "",
        {}},
@@ -135,10 +133,10 @@ std::vector<ReproduceStep> reproduce_steps(const std::filesystem::path& out, boo
        {scenes / "press.toml"}},
       {"Fig. 13: grains soaked for five times, rendered with the CDRF", {"figure", "13"}, "figure13", "", {}},
       {"Rendering: error against time for the samplers", {"study", "render"}, "render-study", "", {}},
-      {"The chawan pour's last frame, 1280 x 720 at 64 spp",
-       {"render", "--pour", (out / "pour").string(), "--width", "1280", "--height", "720", "--spp", "64", "--eye", "0",
-        "-0.12", "0.16", "--look-at", "0", "0", "0.03", "--fov", "35"},
-       "render-pour", "pour", {}},
+      {"The chawan's last frame, 1280 x 720 at 64 spp",
+       {"render", "--run", (out / "table1" / "chawan").string(), "--width", "1280", "--height", "720", "--spp", "64",
+        "--eye", "0", "-0.12", "0.16", "--look-at", "0", "0", "0.03", "--fov", "35"},
+       "render-chawan", "table1", {}},
   };
   std::vector<ReproduceStep> result;
   for (ReproduceStep step : steps) {

@@ -25,13 +25,13 @@ void figure10_command(const Figure10Settings& s, const std::filesystem::path& fo
     overrides.push_back("grains.soak_minutes=" + cell(minutes));
     return overrides;
   };
-  for (const double minutes : s.soak_minutes) validate(read_scene_file(s.scene, overrides_for(minutes)).pour);
+  for (const double minutes : s.soak_minutes) validate(read_scene_file(s.scene, overrides_for(minutes)));
   make_output_folder(folder);  // only once every run's scene reads
   CsvTable table({"soak_minutes", "footprint_radius_m", "clusters", "awake_at_end", "simulation_s"});
-  std::vector<PourResult> results;
+  std::vector<SceneResult> results;
   for (const double minutes : s.soak_minutes) {
-    const PourResult r =
-        run_scene_command(s.scene, overrides_for(minutes), folder / ("soak_" + cell(minutes) + "min")).pour;
+    const SceneResult r =
+        run_scene_command(s.scene, overrides_for(minutes), folder / ("soak_" + cell(minutes) + "min"));
     table.add_row({cell(minutes), cell(r.footprint_radius), cell(r.clusters), cell(r.awake), cell(r.simulation_seconds)});
     results.push_back(r);
   }

@@ -33,15 +33,16 @@ constexpr PaperRow kPaper[] = {
 };
 
 /// What the scene simulates: body model, the effects that are on, colliders and emitter.
-std::string simulated_effects(const PourSettings& p) {
-  std::string text = p.body == xpbd::BodyKind::kRigid ? "rigid grains" : "soft grains";
-  if (p.static_friction > 0.0) text += "; friction";
-  if (p.cohesion) text += "; cohesion (" + cell(p.soak_minutes) + " min soak)";
-  if (p.body == xpbd::BodyKind::kSoft && p.damping) text += "; damping";
-  if (p.sleeping) text += "; sleeping";
-  text += p.container == Container::kChawan ? "; chawan" : "; plate";
-  if (p.fill_mould >= 0) text += "; mould filled in rounds";
-  const size_t kinematic = p.colliders.size() + p.mesh_colliders.size() - (p.fill_mould >= 0 ? 1 : 0);
+std::string simulated_effects(const Scene& p) {
+  const bool fill = p.emitter.kind == EmitterKind::kFill;
+  std::string text = p.grains.body == xpbd::BodyKind::kRigid ? "rigid grains" : "soft grains";
+  if (p.effects.static_friction > 0.0) text += "; friction";
+  if (p.effects.cohesion) text += "; cohesion (" + cell(p.grains.soak_minutes) + " min soak)";
+  if (p.grains.body == xpbd::BodyKind::kSoft && p.effects.damping) text += "; damping";
+  if (p.effects.sleeping) text += "; sleeping";
+  text += p.container.kind == Container::kChawan ? "; chawan" : "; plate";
+  if (fill) text += "; mould filled in rounds";
+  const size_t kinematic = p.colliders.size() + p.mesh_colliders.size() - (fill ? 1 : 0);
   if (kinematic > 0) text += "; " + std::to_string(kinematic) + " more collider(s)";
   for (const MeshCollider& m : p.mesh_colliders)
     if (std::isfinite(m.collider.removal_time)) text += "; mould taken away at " + cell(m.collider.removal_time) + " s";
@@ -60,10 +61,10 @@ std::string ratio(double paper, double ours) { return ours > 0.0 ? fixed(paper /
 
 void table1_command(const Table1Settings& s, const std::filesystem::path& folder) {
   // Every scene reads before any runs.
-  std::vector<SceneDescription> scenes;
+  std::vector<Scene> scenes;
   for (const PaperRow& row : kPaper) {
     scenes.push_back(read_scene_file(s.scenes / (std::string(row.scene) + ".toml"), s.overrides));
-    validate(scenes.back().pour);
+    validate(scenes.back());
     if (!scenes.back().render) throw SceneError(std::string(row.scene) + ".toml: table 1 needs its [render] section");
   }
   make_output_folder(folder);
@@ -76,8 +77,8 @@ void table1_command(const Table1Settings& s, const std::filesystem::path& folder
   std::string effects;
   for (size_t k = 0; k < scenes.size(); ++k) {
     const PaperRow& row = kPaper[k];
-    const SceneDescription& scene = scenes[k];
-    std::printf("table 1: %s (%d grains, %d frames)\n", row.scene, scene.pour.count, scene.pour.frames);
+    const Scene& scene = scenes[k];
+    std::printf("table 1: %s (%d grains, %d frames)\n", row.scene, scene.grains.count, scene.solver.frames);
     const std::filesystem::path run = folder / row.scene;
     const SceneResult result = run_scene_command(s.scenes / (std::string(row.scene) + ".toml"), s.overrides, run);
     double full_seconds = NAN;
@@ -85,24 +86,24 @@ void table1_command(const Table1Settings& s, const std::filesystem::path& folder
       SceneRender paper_setting = *scene.render;
       paper_setting.width = 3840, paper_setting.height = 2160, paper_setting.samples_per_pixel = 800;
       const auto start = std::chrono::steady_clock::now();
-      render_command(scene_render_settings(paper_setting, scene.pour, run), run / "render_full");
+      render_command(scene_render_settings(paper_setting, scene, run), run / "render_full");
       full_seconds = seconds_since(start);
     }
     const std::string preview = std::to_string(scene.render->width) + "x" + std::to_string(scene.render->height) + " " +
                                 std::to_string(scene.render->samples_per_pixel) + " spp";
-    const double simulation = result.pour.simulation_seconds;
-    table.add_row({cell(row.figure), row.scene, cell(scene.pour.count), cell(row.grains), cell(scene.pour.frames),
+    const double simulation = result.simulation_seconds;
+    table.add_row({cell(row.figure), row.scene, cell(scene.grains.count), cell(row.grains), cell(scene.solver.frames),
                    cell(simulation), cell(row.simulation_seconds), cell(row.simulation_seconds / simulation), preview,
                    cell(result.render_seconds), s.full ? cell(full_seconds) : "n/a", cell(row.render_seconds),
-                   s.full ? cell(row.render_seconds / full_seconds) : "n/a", simulated_effects(scene.pour),
+                   s.full ? cell(row.render_seconds / full_seconds) : "n/a", simulated_effects(scene),
                    rendered_effects(*scene.render)});
-    markdown += "| " + std::to_string(row.figure) + " | " + row.scene + " | " + std::to_string(scene.pour.count) + " | " +
-                std::to_string(scene.pour.frames) + " | " + fixed(simulation, 1) + " s | " + fixed(row.simulation_seconds, 0) + " s | " +
+    markdown += "| " + std::to_string(row.figure) + " | " + row.scene + " | " + std::to_string(scene.grains.count) + " | " +
+                std::to_string(scene.solver.frames) + " | " + fixed(simulation, 1) + " s | " + fixed(row.simulation_seconds, 0) + " s | " +
                 ratio(row.simulation_seconds, simulation) + " | " + fixed(result.render_seconds, 1) + " s (" + preview +
                 ") | " + (s.full ? fixed(full_seconds, 0) + " s" : "not run (--full)") + " | " +
                 fixed(row.render_seconds, 0) + " s | " + (s.full ? ratio(row.render_seconds, full_seconds) : "n/a") +
                 " |\n";
-    effects += "- " + std::string(row.scene) + ": " + simulated_effects(scene.pour) + "; rendered: " +
+    effects += "- " + std::string(row.scene) + ": " + simulated_effects(scene) + "; rendered: " +
                rendered_effects(*scene.render) + "\n";
   }
   write_file_atomically(folder / "table1.csv", table.text());

@@ -1,22 +1,121 @@
-// `rice run`; see scene_run.hpp.
+// A scene run; see scene_run.hpp.
 #include "experiments/scene/scene_run.hpp"
 
-#include <chrono>
+#include <algorithm>
 #include <cstdio>
+#include <iostream>
 
 #include "experiments/io/atomic_file.hpp"
+#include "experiments/io/csv_table.hpp"
+#include "experiments/io/interrupt.hpp"
 #include "experiments/io/progress.hpp"
+#include "experiments/io/run_info.hpp"
+#include "experiments/scene/scene_file.hpp"
+#include "experiments/scene/scene_parts.hpp"
+#include "experiments/scene/stepper.hpp"
+#include "experiments/scene/world_builder.hpp"
 #include "grains/absorption_table.hpp"
 #include "grains/water_content.hpp"
 
 namespace rice::experiments {
+namespace {
 
-RenderCommandSettings scene_render_settings(const SceneRender& r, const PourSettings& pour,
-                                            const std::filesystem::path& run) {
+using Observers = std::vector<std::unique_ptr<Observer>>;
+
+/// The scene's settings as it ran them, for run_info.txt.
+RunInfoEntries scene_entries(const Scene& scene, const World& world) {
+  const bool plate = scene.container.kind == Container::kPlate;
+  const bool rigid = scene.grains.body == xpbd::BodyKind::kRigid;
+  return {{"command", "run"},
+          {"scene", scene.name},
+          {"container", plate ? "plate" : "chawan"},
+          {"chawan_scale", cell(scene.container.scale)},
+          {"rim_height_m", plate ? "n/a" : cell(world.bowl.height)},
+          {"more_colliders", cell(static_cast<long>(scene.colliders.size() + scene.mesh_colliders.size()))},
+          {"cultivar", scene.grains.cultivar},
+          {"count", cell(scene.grains.count)},
+          {"variants", cell(scene.grains.variants)},
+          {"body", rigid ? "rigid" : "soft"},
+          {"frames", cell(scene.solver.frames)},
+          {"fps", cell(scene.solver.fps)},
+          {"young_pa", cell(scene.grains.young)},
+          {"rayleigh_time_s", cell(world.rayleigh_time)},
+          {"cohesion", scene.effects.cohesion ? "on" : "off"},
+          {"damping", scene.effects.damping ? "on" : "off"},
+          {"pull_off_force_in_weights", cell(world.pull_off_in_weights)},
+          {"sleeping", scene.effects.sleeping ? "on" : "off"},
+          {"static_friction", cell(scene.effects.static_friction)},
+          {"dynamic_friction", cell(scene.effects.dynamic_friction)},
+          {"seed", std::to_string(scene.grains.seed)},
+          {"frame_poses", rigid ? "world = q (p0 - c0) + (x, y, z); c0 the grain's first centre" : "simulation vertices"}};
+}
+
+/// Every frame: the emitter releases what is due, the stepper steps, the observers look;
+/// returns the wall time.
+double step_frames(int frames, Emitter& emitter, World& world, Stepper& stepper, Observers& observers) {
+  Progress progress("scene frames", frames);
+  const auto start = std::chrono::steady_clock::now();
+  for (int frame = 1; frame <= frames; ++frame) {
+    const auto frame_start = std::chrono::steady_clock::now();
+    emitter.emit(world, stepper.time());
+    stepper.step();
+    const double wall = seconds_since(frame_start);
+    for (auto& observer : observers) observer->observe(world, stepper, frame, wall);
+    progress.update(frame);
+    stop_point();
+  }
+  progress.finish();
+  return seconds_since(start);
+}
+
+void print_summary(const Scene& scene, const Stepper& stepper, double simulation_seconds, double setup_seconds) {
+  const xpbd::SolverTimings& t = stepper.timings();
+  std::cout << "rice run: " << scene.grains.count << (scene.grains.body == xpbd::BodyKind::kRigid ? " rigid" : " soft")
+            << " grains, " << scene.solver.frames << " frames in " << simulation_seconds << " s (broad phase "
+            << t.broad_phase << " s, narrow phase " << t.narrow_phase << " s, solves " << t.solve() << " s, sleeping "
+            << t.sleeping << " s); set-up " << setup_seconds << " s\n";
+}
+
+}  // namespace
+
+SceneRun::SceneRun(const Scene& scene) : scene_(scene), start_(std::chrono::steady_clock::now()) {
+  validate(scene_);
+  emitter_ = make_emitter(scene_);
+  world_ = build_world(scene_, *emitter_);
+}
+
+SceneRun::~SceneRun() = default;
+
+SceneResult SceneRun::run(const std::filesystem::path& folder) {
+  make_output_folder(folder);
+  Observers observers = make_observers(scene_, folder);
+  for (auto& observer : observers) observer->begin(world_);
+  const double setup_seconds = seconds_since(start_);
+  Stepper stepper(world_.model, scene_);
+  const double simulation_seconds = step_frames(scene_.solver.frames, *emitter_, world_, stepper, observers);
+
+  SceneReport report;
+  report.result.simulation_seconds = simulation_seconds;
+  report.info = scene_entries(scene_, world_);
+  emitter_->report(world_, report.info);
+  stepper.report(report.info);
+  for (auto& observer : observers) observer->end(world_, stepper, report);
+  stop_point();
+  print_summary(scene_, stepper, simulation_seconds, setup_seconds);
+  report.info.push_back({"setup_wall_s", cell(setup_seconds)});
+  report.info.push_back({"simulation_wall_s", cell(simulation_seconds)});
+  report.info.push_back({"wall_s", cell(seconds_since(start_))});
+  write_file_atomically(folder / "run_info.txt", run_info(report.info));
+  return report.result;
+}
+
+SceneResult run_scene(const Scene& scene, const std::filesystem::path& folder) { return SceneRun(scene).run(folder); }
+
+RenderCommandSettings scene_render_settings(const SceneRender& r, const Scene& scene, const std::filesystem::path& run) {
   RenderCommandSettings s;
-  s.pour = run;
+  s.run = run;
   const grains::WaterContentModel water(grains::read_absorption_table(grains::default_absorption_table()));
-  s.absorption_percent = water.absorption_percent(pour.soak_minutes, pour.soak_temperature);
+  s.absorption_percent = water.absorption_percent(scene.grains.soak_minutes, scene.grains.soak_temperature);
   s.render.width = r.width;
   s.render.height = r.height;
   s.render.samples_per_pixel = r.samples_per_pixel;
@@ -36,10 +135,10 @@ RenderCommandSettings scene_render_settings(const SceneRender& r, const PourSett
 }
 
 SceneResult run_scene_command(const std::filesystem::path& scene_file, const std::vector<std::string>& overrides,
-                             const std::filesystem::path& folder) {
+                              const std::filesystem::path& folder) {
   const std::string text = read_scene_text(scene_file);
-  const SceneDescription scene = parse_scene(text, scene_file.string(), overrides);
-  validate(scene.pour);
+  const Scene scene = parse_scene(text, scene_file.string(), overrides);
+  SceneRun run(scene);  // nothing written before the scene is known to run
   make_output_folder(folder);
   std::string copy = text;
   if (!overrides.empty()) {
@@ -48,11 +147,10 @@ SceneResult run_scene_command(const std::filesystem::path& scene_file, const std
   }
   write_file_atomically(folder / "scene.toml", copy);
   std::printf("scene %s: %s\n", scene.name.c_str(), scene.description.c_str());
-  SceneResult result;
-  result.pour = pour_command(scene.pour, folder);
+  SceneResult result = run.run(folder);
   if (scene.render) {
     const auto start = std::chrono::steady_clock::now();
-    RenderCommandSettings settings = scene_render_settings(*scene.render, scene.pour, folder);
+    RenderCommandSettings settings = scene_render_settings(*scene.render, scene, folder);
     settings.camera = render_command(settings, folder / "render");
     result.render_seconds = seconds_since(start);
     if (scene.render->every_frame) {

@@ -1,30 +1,54 @@
-// `rice run SCENE.toml --out DIR [--set section.key=value ...]`: runs a scene file
-// (scene_file.hpp) into a folder, with a copy of the scene it ran.
+// A scene run: a short loop over named parts. The scene (scene.hpp, read by scene_file.hpp)
+// gives the world builder (world_builder.hpp) its grains, bodies and colliders; the emitter
+// (emitter.hpp) releases the grains over time; the stepper (stepper.hpp) advances the world a
+// frame at a time; the observers (observer.hpp) write what each frame and the end show. The
+// parts are listed in scene_parts.cpp. `rice run SCENE.toml --out DIR [--set section.key=value
+// ...]` runs a scene file this way, with a copy of the scene it ran and its [render] image.
 #pragma once
 
+#include <chrono>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
-#include "experiments/scene/pour_scene.hpp"
 #include "experiments/render/render_command.hpp"
-#include "experiments/scene/scene_file.hpp"
+#include "experiments/scene/emitter.hpp"
+#include "experiments/scene/scene.hpp"
+#include "experiments/scene/scene_result.hpp"
+#include "experiments/scene/world.hpp"
 
 namespace rice::experiments {
 
-struct SceneResult {
-  PourResult pour;
-  double render_seconds = 0.0;  ///< the [render] section's image (0: the scene has none)
+class SceneRun {
+ public:
+  /// Checks the scene (std::invalid_argument naming the key), builds its world and lays out
+  /// its emitter (std::invalid_argument where it cannot); writes nothing.
+  explicit SceneRun(const Scene& scene);
+  ~SceneRun();
+
+  /// Steps every frame into `folder` (created): the observers' files, then run_info.txt.
+  SceneResult run(const std::filesystem::path& folder);
+
+ private:
+  Scene scene_;
+  std::unique_ptr<Emitter> emitter_;
+  World world_;
+  std::chrono::steady_clock::time_point start_;
 };
 
-/// Reads the scene (a SceneError, and nothing written, when it is bad), then runs it into
-/// `folder` with a copy of the scene file, the overrides listed at its end.
+/// SceneRun(scene).run(folder).
+SceneResult run_scene(const Scene& scene, const std::filesystem::path& folder);
+
+/// `rice run`: reads the scene file (a SceneError, and nothing written, when it is bad), then
+/// runs it into `folder` with a copy of the file (scene.toml, the overrides listed at its end)
+/// and renders its [render] section.
 SceneResult run_scene_command(const std::filesystem::path& scene_file, const std::vector<std::string>& overrides,
                               const std::filesystem::path& folder);
 
-/// `rice render --pour` settings for the last frame of a scene's run in `run`: the image and
+/// `rice render --run` settings for the last frame of a scene's run in `run`: the image and
 /// camera of `render`, the grains' CDRF at the scene's water content.
-RenderCommandSettings scene_render_settings(const SceneRender& render, const PourSettings& pour,
+RenderCommandSettings scene_render_settings(const SceneRender& render, const Scene& scene,
                                             const std::filesystem::path& run);
 
 }  // namespace rice::experiments

@@ -3,8 +3,8 @@
 
 namespace rice::experiments {
 
-const char* scene_name(Scene scene) {
-  return scene == Scene::kHangingCantilever ? "hanging-cantilever" : "twisted-bar";
+const char* scene_name(ConvergenceScene scene) {
+  return scene == ConvergenceScene::kHangingCantilever ? "hanging-cantilever" : "twisted-bar";
 }
 
 const char* body_model_name(BodyModel model) {
@@ -15,7 +15,7 @@ const char* damping_name(Damping damping) {
   return damping == Damping::kNone ? "none" : damping == Damping::kConstraint ? "constraint" : "strain-rate";
 }
 
-xpbd::Model make_scene(Scene scene, BodyModel body, const BarSettings& bar, int resolution, Damping damping,
+xpbd::Model make_scene(ConvergenceScene scene, BodyModel body, const BarSettings& bar, int resolution, Damping damping,
                        double tau) {
   const double rayleigh_time = damping == Damping::kConstraint ? tau : 0.0;
   const double strain_rate_time = damping == Damping::kStrainRate ? tau : 0.0;
@@ -32,7 +32,7 @@ xpbd::Model make_scene(Scene scene, BodyModel body, const BarSettings& bar, int 
     xpbd::add_tet_volumes(model, mesh, lame.lambda + 2.0 * lame.mu / 3.0, rayleigh_time);
   }
   xpbd::pin_particles(model, xpbd::vertices_at_min_x(mesh.V));
-  if (scene == Scene::kTwistedBar) {
+  if (scene == ConvergenceScene::kTwistedBar) {
     const Vec3 axis_point(0.0, 0.5 * bar.width, 0.5 * bar.width);
     for (int i = 0; i < model.particles.size(); ++i) {
       if (model.particles.w[i] == 0.0) continue;

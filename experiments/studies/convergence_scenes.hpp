@@ -12,10 +12,10 @@
 
 namespace rice::experiments {
 
-enum class Scene { kHangingCantilever, kTwistedBar };
+enum class ConvergenceScene { kHangingCantilever, kTwistedBar };
 enum class BodyModel { kNeoHookean, kSprings };
 
-const char* scene_name(Scene scene);
+const char* scene_name(ConvergenceScene scene);
 const char* body_model_name(BodyModel model);
 
 struct BarSettings {
@@ -36,7 +36,7 @@ const char* damping_name(Damping damping);
 
 /// The scene at `resolution` cubes across the section (5 × resolution along), damped with
 /// time τ as `damping` says.
-xpbd::Model make_scene(Scene scene, BodyModel body, const BarSettings& bar, int resolution, Damping damping,
+xpbd::Model make_scene(ConvergenceScene scene, BodyModel body, const BarSettings& bar, int resolution, Damping damping,
                        double tau);
 
 }  // namespace rice::experiments

@@ -28,7 +28,7 @@ using xpbd::Positions;
 
 /// One simulation setting shared by a reference trajectory and the XPBD runs against it.
 struct Case {
-  Scene scene;
+  ConvergenceScene scene;
   BodyModel body;
   Damping damping;
   double rayleigh_time;  ///< τ of the damping; 0 when undamped
@@ -183,7 +183,7 @@ void mark_pareto_fronts(std::vector<ConvergenceRun>& runs) {
 
 std::vector<Case> reference_cases(const ConvergenceSettings& s) {
   std::vector<Case> cases;
-  for (const Scene scene : {Scene::kHangingCantilever, Scene::kTwistedBar}) {
+  for (const ConvergenceScene scene : {ConvergenceScene::kHangingCantilever, ConvergenceScene::kTwistedBar}) {
     for (const Damping damping : {Damping::kNone, Damping::kConstraint})
       for (const int resolution : s.resolutions)
         for (const int n : resolution == s.grid_resolution ? s.substeps : s.resolution_substeps)
@@ -194,7 +194,7 @@ std::vector<Case> reference_cases(const ConvergenceSettings& s) {
         cases.push_back({scene, BodyModel::kNeoHookean, Damping::kStrainRate, s.rayleigh_time, s.grid_resolution, n});
   }
   for (const int n : s.substeps)  // PBD's contrast: springs and volumes, undamped
-    cases.push_back({Scene::kHangingCantilever, BodyModel::kSprings, Damping::kNone, 0.0, s.grid_resolution, n});
+    cases.push_back({ConvergenceScene::kHangingCantilever, BodyModel::kSprings, Damping::kNone, 0.0, s.grid_resolution, n});
   return cases;
 }
 

@@ -9,6 +9,7 @@
 
 #include "experiments/io/gnuplot.hpp"
 #include "experiments/io/interrupt.hpp"
+#include "experiments/scene/scene_run.hpp"
 #include "experiments/io/atomic_file.hpp"
 #include "experiments/io/csv_table.hpp"
 #include "experiments/io/progress.hpp"
@@ -20,7 +21,7 @@ void validate(const PourSubstepStudySettings& settings) {
   if (settings.substeps.empty()) throw std::invalid_argument("pour-substeps: give at least one --substeps count");
   for (const int n : settings.substeps)
     if (n < 1 || n > 10000) throw std::invalid_argument("pour-substeps: --substeps counts must be in [1, 10000]");
-  validate(settings.pour);
+  validate(settings.scene);
 }
 
 void pour_substep_study_command(const PourSubstepStudySettings& settings, const std::filesystem::path& folder) {
@@ -29,15 +30,15 @@ void pour_substep_study_command(const PourSubstepStudySettings& settings, const 
   const auto start = std::chrono::steady_clock::now();
   CsvTable table({"substeps", "substep_s", "wall_s", "penetration_between_grains_m", "penetration_into_container_m",
                   "awake_at_end"});
-  std::vector<PourResult> results;
+  std::vector<SceneResult> results;
   for (size_t k = 0; k < settings.substeps.size(); ++k) {
     const int n = settings.substeps[k];
     std::printf("pour-substeps: run %zu/%zu, %d substeps per frame\n", k + 1, settings.substeps.size(), n);
-    PourSettings pour = settings.pour;
-    pour.substeps = n;
-    const PourResult r = pour_command(pour, folder / ("substeps_" + std::to_string(n)));
+    Scene scene = settings.scene;
+    scene.solver.substeps = n;
+    const SceneResult r = run_scene(scene, folder / ("substeps_" + std::to_string(n)));
     results.push_back(r);
-    table.add_row({cell(n), cell(1.0 / (pour.fps * n)), cell(r.simulation_seconds),
+    table.add_row({cell(n), cell(1.0 / (scene.solver.fps * n)), cell(r.simulation_seconds),
                    cell(r.penetration.between_bodies), cell(r.penetration.into_colliders), cell(r.awake)});
   }
   write_file_atomically(folder / "pour_substeps.csv", table.text());
@@ -71,10 +72,10 @@ plot 'pour_substeps.csv' using 3:4:1 with linespoints pt 7 title 'between grains
   stop_point();
   write_file_atomically(folder / "run_info.txt",
                         run_info({{"study", "pour-substeps"},
-                                  {"count", cell(settings.pour.count)},
-                                  {"body", settings.pour.body == xpbd::BodyKind::kRigid ? "rigid" : "soft"},
-                                  {"frames", cell(settings.pour.frames)},
-                                  {"cohesion", settings.pour.cohesion ? "on" : "off"},
+                                  {"count", cell(settings.scene.grains.count)},
+                                  {"body", settings.scene.grains.body == xpbd::BodyKind::kRigid ? "rigid" : "soft"},
+                                  {"frames", cell(settings.scene.solver.frames)},
+                                  {"cohesion", settings.scene.effects.cohesion ? "on" : "off"},
                                   {"wall_s", cell(seconds_since(start))}}));
 }
 

@@ -91,29 +91,35 @@ void read_absorption(std::string_view bytes) {
 void read_scene(std::string_view bytes) {
   const auto scene = read_or_refuse([&] { return experiments::parse_scene(bytes, kName); });
   if (!scene) return;
-  const experiments::PourSettings& p = scene->pour;
-  expect(p.count >= 1 && p.count <= 100000 && p.variants >= 1 && p.variants <= 1000 && p.frames >= 1 &&
-             p.frames <= 100000 && p.substeps >= 0 && p.substeps <= 10000 && p.iterations >= 1 &&
-             p.iterations <= 1000,
+  const experiments::Scene& p = *scene;
+  expect(p.grains.count >= 1 && p.grains.count <= 100000 && p.grains.variants >= 1 && p.grains.variants <= 1000 &&
+             p.solver.frames >= 1 && p.solver.frames <= 100000 && p.solver.substeps >= 0 &&
+             p.solver.substeps <= 10000 && p.solver.iterations >= 1 && p.solver.iterations <= 1000,
          "a count outside the documented ranges");
-  expect(p.fps > 0.0 && p.fps <= 1000.0 && p.young >= 1e3 && p.young <= 1e9 && p.poisson > -1.0 && p.poisson < 0.5 &&
-             p.soak_minutes > 0.0 && p.soak_minutes <= 1e5 && p.soak_temperature >= 0.0 &&
-             p.soak_temperature <= 100.0 && p.grid_spacing >= 2e-4 && p.grid_spacing <= 1e-2 &&
-             p.spout_height >= 0.0 && p.spout_height <= 10.0 && p.spout_radius >= 0.0 && p.spout_radius <= 1.0 &&
-             p.pour_seconds >= 0.0 && p.pour_seconds <= 1e4,
+  expect(p.solver.fps > 0.0 && p.solver.fps <= 1000.0 && p.grains.young >= 1e3 && p.grains.young <= 1e9 &&
+             p.grains.poisson > -1.0 && p.grains.poisson < 0.5 && p.grains.soak_minutes > 0.0 &&
+             p.grains.soak_minutes <= 1e5 && p.grains.soak_temperature >= 0.0 && p.grains.soak_temperature <= 100.0 &&
+             p.container.grid_spacing >= 2e-4 && p.container.grid_spacing <= 1e-2 && p.emitter.height >= 0.0 &&
+             p.emitter.height <= 10.0 && p.emitter.radius >= 0.0 && p.emitter.radius <= 1.0 &&
+             p.emitter.seconds > 0.0 && p.emitter.seconds <= 1e4,
          "a number outside the documented ranges");
-  expect(p.dynamic_friction >= 0.0 && p.dynamic_friction <= p.static_friction && p.static_friction <= 10.0,
+  expect(p.effects.dynamic_friction >= 0.0 && p.effects.dynamic_friction <= p.effects.static_friction &&
+             p.effects.static_friction <= 10.0,
          "friction coefficients outside 0 <= mu_k <= mu_s <= 10");
-  expect(!p.vertex_block_descent || p.body == xpbd::BodyKind::kSoft, "vertex block descent on rigid grains");
-  if (const auto& r = scene->render)
+  expect(!p.solver.vertex_block_descent || p.grains.body == xpbd::BodyKind::kSoft, "vertex block descent on rigid grains");
+  expect(p.emitter.kind != experiments::EmitterKind::kFill ||
+             (p.emitter.mould >= 0 && p.emitter.mould < static_cast<int>(p.mesh_colliders.size()) &&
+              p.mesh_colliders[p.emitter.mould].hollow),
+         "a fill whose mould is not a hollow mesh");
+  if (const auto& r = p.render)
     expect(r->width >= 16 && r->width <= 16384 && r->height >= 16 && r->height <= 16384 && r->samples_per_pixel >= 1 &&
                r->vertical_fov_degrees > 0.0 && r->vertical_fov_degrees < 180.0 && r->eye.has_value() == r->look_at.has_value() &&
-               p.body == xpbd::BodyKind::kRigid,
+               p.grains.body == xpbd::BodyKind::kRigid,
            "a render setting outside the documented ranges");
   for (const xpbd::Collider& c : p.colliders)
     expect(!c.motion.empty() && c.dynamic_friction <= c.static_friction, "a collider without a pose or with mu_k > mu_s");
-  const experiments::SceneDescription again = experiments::parse_scene(bytes, kName);
-  expect(again.name == scene->name && again.pour.count == p.count && again.pour.seed == p.seed,
+  const experiments::Scene again = experiments::parse_scene(bytes, kName);
+  expect(again.name == p.name && again.grains.count == p.grains.count && again.grains.seed == p.grains.seed,
          "two reads of one input differ");
 }
 

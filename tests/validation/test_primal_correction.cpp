@@ -15,7 +15,7 @@ namespace {
 TEST(PrimalCorrection, ConvergedXpbdStepBecomesTheNewtonStep) {
   const BarSettings bar;
   const double h = 1.0 / 60.0 / 64.0;
-  xpbd::Model model = make_scene(Scene::kHangingCantilever, BodyModel::kNeoHookean, bar, 1, Damping::kNone, 0.0);
+  xpbd::Model model = make_scene(ConvergenceScene::kHangingCantilever, BodyModel::kNeoHookean, bar, 1, Damping::kNone, 0.0);
   fem::ImplicitSolver reference(model, {.time_step = h, .newton = {.tolerance = 1e-12}});
   for (int s = 0; s < 200; ++s) reference.step();  // bend it
   const xpbd::Model start = model;

@@ -66,22 +66,22 @@ TEST(Reproduce, RunsEachStepOnceThenSkipsWhatIsUpToDate) {
 
   write_file_atomically(scenes / "press.toml", "# a harder press\n");  // a scene file edited...
   reproduce_command(settings, out, call);  // ...reruns the steps that read it
-  EXPECT_EQ(rice.ran, (std::vector<std::string>{"table1", "press"}));
+  EXPECT_EQ(rice.ran, (std::vector<std::string>{"table1", "press", "render-chawan"}));  // the render of table 1's chawan too
 
   rice.ran.clear();
   ReproduceSettings only = settings;
-  only.only = {"pour"};
-  reproduce_command(only, out, call);  // the pour reruns only when forced...
+  only.only = {"table1"};
+  reproduce_command(only, out, call);  // table 1 reruns only when forced...
   EXPECT_TRUE(rice.ran.empty());
   only.force = true;
   reproduce_command(only, out, call);
-  EXPECT_EQ(rice.ran, std::vector<std::string>{"pour"});
+  EXPECT_EQ(rice.ran, std::vector<std::string>{"table1"});
   only.force = false;
-  only.only = {"pour", "render-pour"};
-  std::filesystem::remove(out / "pour" / "reproduce.stamp");
+  only.only = {"table1", "render-chawan"};
+  std::filesystem::remove(out / "table1" / "reproduce.stamp");
   rice.ran.clear();
-  reproduce_command(only, out, call);  // ...and the render of its last frame follows it
-  EXPECT_EQ(rice.ran, (std::vector<std::string>{"pour", "render-pour"}));
+  reproduce_command(only, out, call);  // ...and the render of its chawan's last frame follows it
+  EXPECT_EQ(rice.ran, (std::vector<std::string>{"table1", "render-chawan"}));
 
   ReproduceSettings all = settings;
   all.force = true;

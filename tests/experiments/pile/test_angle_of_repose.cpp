@@ -1,7 +1,6 @@
 // The angle of repose (angle_of_repose.hpp): exact on a sampled cone, refused without a flank,
-// and measured on heaps poured by `rice pour --container plate`: the dry heap's angle lies
-// between 20° and 40° (issue 10), and water-content cohesion raises it; a pour whose layers
-// would be released inside each other is refused.
+// and measured on heaps poured from a spout onto a plate: the dry heap's angle lies between 20°
+// and 40° (issue 10), and water-content cohesion raises it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +9,7 @@
 #include <stdexcept>
 
 #include "experiments/pile/angle_of_repose.hpp"
-#include "experiments/scene/pour_scene.hpp"
+#include "experiments/scene/scene_run.hpp"
 
 namespace rice::experiments {
 namespace {
@@ -50,39 +49,26 @@ TEST(AngleOfRepose, RefusesAHeapWithoutAFlank) {
 
 TEST(AngleOfRepose, CohesionRaisesTheAngleOfAPouredHeap) {
   // 400 rigid japonica grains, five a layer from a spout 5 cm above a plate over 3.5 s, then
-  // 2.5 s to settle; the same pour with and without the water-content bonds (the README's
-  // `rice pour --container plate` command). Heaps of 300 grains, four rings of flank, gave
-  // dry angles from 19° to 29° as the pour's pace changed by 4%.
-  PourSettings settings;
-  settings.container = Container::kPlate;
-  settings.count = 400;
-  settings.frames = 180;
-  settings.pour_seconds = 3.5;
-  settings.spout_height = 0.05;
+  // 2.5 s to settle; the same pour with and without the water-content bonds (the main job's
+  // heap and heap-dry steps). Heaps of 300 grains, four rings of flank, gave dry angles from
+  // 19° to 29° as the pour's pace changed by 4%.
+  Scene scene;
+  scene.container.kind = Container::kPlate;
+  scene.grains.count = 400;
+  scene.solver.frames = 180;
+  scene.emitter.seconds = 3.5;
+  scene.emitter.height = 0.05;
   const std::filesystem::path folder = std::filesystem::path(RICE_TEST_SCRATCH) / "heap";
-  settings.cohesion = false;
-  const PourResult dry = pour_command(settings, folder / "dry");
-  settings.cohesion = true;
-  const PourResult sticky = pour_command(settings, folder / "sticky");
+  scene.effects.cohesion = false;
+  const SceneResult dry = run_scene(scene, folder / "dry");
+  scene.effects.cohesion = true;
+  const SceneResult sticky = run_scene(scene, folder / "sticky");
   EXPECT_GT(dry.angle_of_repose_degrees, 20.0);
   EXPECT_LT(dry.angle_of_repose_degrees, 40.0);
   EXPECT_GT(sticky.angle_of_repose_degrees, dry.angle_of_repose_degrees + 5.0);
   EXPECT_GT(sticky.heap_height, dry.heap_height);
   RecordProperty("angle_dry_degrees", std::to_string(dry.angle_of_repose_degrees));
   RecordProperty("angle_sticky_degrees", std::to_string(sticky.angle_of_repose_degrees));
-}
-
-TEST(PourScene, RefusesLayersReleasedInsideEachOther) {
-  // 800 grains five a layer over 3 s: a layer every 19 ms, while a grain needs ~40 ms to fall
-  // its own length. Refused before any file is written.
-  PourSettings settings;
-  settings.container = Container::kPlate;
-  settings.variants = 1;
-  settings.pour_seconds = 3.0;
-  const std::filesystem::path folder = std::filesystem::path(RICE_TEST_SCRATCH) / "refused-pour";
-  std::filesystem::remove_all(folder);
-  EXPECT_THROW(pour_command(settings, folder), std::invalid_argument);
-  EXPECT_FALSE(std::filesystem::exists(folder));
 }
 
 }  // namespace

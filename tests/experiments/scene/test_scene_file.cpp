@@ -1,5 +1,5 @@
-// Scene files (experiments/scene_file.hpp): every shipped scene parses; an empty file gives
-// `rice pour`'s defaults; each kind of mistake stops the read with a message naming the file,
+// Scene files (experiments/scene/scene_file.hpp): every shipped scene parses; an empty file gives
+// the scene's defaults; each kind of mistake stops the read with a message naming the file,
 // the line and the key; `--set` overrides; `rice run` on a short variant writes the run with a
 // copy of its scene, and a bad scene writes nothing.
 #include <gtest/gtest.h>
@@ -11,10 +11,10 @@
 #include <string>
 
 #include "experiments/figures/figure10.hpp"
+#include "experiments/figures/table1.hpp"
 #include "experiments/pile/pile_measures.hpp"
 #include "experiments/scene/scene_file.hpp"
 #include "experiments/scene/scene_run.hpp"
-#include "experiments/figures/table1.hpp"
 #include "tests/xpbd/grain_fixtures.hpp"
 
 #ifndef RICE_SCENES_DIR
@@ -30,27 +30,64 @@ TEST(SceneFile, EveryShippedSceneParses) {
     if (entry.path().extension() != ".toml") continue;
     ++count;
     SCOPED_TRACE(entry.path().string());
-    const SceneDescription scene = read_scene_file(entry.path());
+    const Scene scene = read_scene_file(entry.path());
     EXPECT_EQ(scene.name, entry.path().stem().string());
     EXPECT_FALSE(scene.description.empty());
-    EXPECT_NO_THROW(validate(scene.pour));
+    EXPECT_NO_THROW(validate(scene));
   }
   EXPECT_GE(count, 2);
 }
 
-TEST(SceneFile, AnEmptyFileIsThePourWithItsDefaults) {
-  const SceneDescription scene = parse_scene("", "dir/empty.toml");
+TEST(SceneFile, AnEmptyFileIsTheSceneWithItsDefaults) {
+  const Scene scene = parse_scene("", "dir/empty.toml");
   EXPECT_EQ(scene.name, "empty");
-  const PourSettings defaults;
-  EXPECT_EQ(scene.pour.count, defaults.count);
-  EXPECT_EQ(scene.pour.frames, defaults.frames);
-  EXPECT_EQ(scene.pour.container, defaults.container);
-  EXPECT_EQ(scene.pour.static_friction, defaults.static_friction);
-  EXPECT_EQ(scene.pour.cohesion, defaults.cohesion);
+  const Scene d;  // the defaults in code equal the key table's, which the reader used
+  EXPECT_EQ(scene.grains.cultivar, d.grains.cultivar);
+  EXPECT_EQ(scene.grains.count, d.grains.count);
+  EXPECT_EQ(scene.grains.variants, d.grains.variants);
+  EXPECT_EQ(scene.grains.seed, d.grains.seed);
+  EXPECT_EQ(scene.grains.body, d.grains.body);
+  EXPECT_EQ(scene.grains.young, d.grains.young);
+  EXPECT_EQ(scene.grains.poisson, d.grains.poisson);
+  EXPECT_EQ(scene.grains.soak_minutes, d.grains.soak_minutes);
+  EXPECT_EQ(scene.grains.soak_temperature, d.grains.soak_temperature);
+  EXPECT_TRUE(std::isnan(scene.grains.stickiness));
+  EXPECT_EQ(scene.solver.fps, d.solver.fps);
+  EXPECT_EQ(scene.solver.frames, d.solver.frames);
+  EXPECT_EQ(scene.solver.substeps, d.solver.substeps);
+  EXPECT_EQ(scene.solver.iterations, d.solver.iterations);
+  EXPECT_EQ(scene.solver.vertex_block_descent, d.solver.vertex_block_descent);
+  EXPECT_EQ(scene.container.kind, d.container.kind);
+  EXPECT_EQ(scene.container.grid_spacing, d.container.grid_spacing);
+  EXPECT_EQ(scene.container.scale, d.container.scale);
+  EXPECT_EQ(scene.emitter.kind, d.emitter.kind);
+  EXPECT_EQ(scene.emitter.height, d.emitter.height);
+  EXPECT_EQ(scene.emitter.radius, d.emitter.radius);
+  EXPECT_EQ(scene.emitter.seconds, d.emitter.seconds);
+  EXPECT_EQ(scene.effects.static_friction, d.effects.static_friction);
+  EXPECT_EQ(scene.effects.dynamic_friction, d.effects.dynamic_friction);
+  EXPECT_EQ(scene.effects.cohesion, d.effects.cohesion);
+  EXPECT_EQ(scene.effects.damping, d.effects.damping);
+  EXPECT_EQ(scene.effects.sleeping, d.effects.sleeping);
+  EXPECT_EQ(scene.effects.render_meshes, d.effects.render_meshes);
+  EXPECT_FALSE(scene.render);
+  // [render] with no keys, and a fill's round time, take their defaults too.
+  const SceneRender r = *parse_scene("[render]\n", "s.toml").render, dr;
+  EXPECT_EQ(r.width, dr.width);
+  EXPECT_EQ(r.height, dr.height);
+  EXPECT_EQ(r.samples_per_pixel, dr.samples_per_pixel);
+  EXPECT_EQ(r.sun_elevation_degrees, dr.sun_elevation_degrees);
+  EXPECT_EQ(r.sun_azimuth_degrees, dr.sun_azimuth_degrees);
+  EXPECT_EQ(r.sun_irradiance, dr.sun_irradiance);
+  EXPECT_EQ(r.sky_radiance, dr.sky_radiance);
+  EXPECT_EQ(r.ground, dr.ground);
+  EXPECT_EQ(r.every_frame, dr.every_frame);
+  EXPECT_EQ(r.vertical_fov_degrees, dr.vertical_fov_degrees);
+  EXPECT_FALSE(r.eye);
 }
 
 TEST(SceneFile, KeysSetTheSettings) {
-  const SceneDescription scene = parse_scene(R"([grains]
+  const Scene scene = parse_scene(R"([grains]
 count = 12
 body = "soft"
 young_pa = 2e5
@@ -64,16 +101,16 @@ friction = false
 cohesion = false
 damping = false
 )", "s.toml");
-  EXPECT_EQ(scene.pour.count, 12);
-  EXPECT_EQ(scene.pour.body, xpbd::BodyKind::kSoft);
-  EXPECT_EQ(scene.pour.young, 2e5);
-  EXPECT_TRUE(scene.pour.vertex_block_descent);
-  EXPECT_EQ(scene.pour.frames, 7);
-  EXPECT_EQ(scene.pour.container, Container::kPlate);
-  EXPECT_EQ(scene.pour.static_friction, 0.0);
-  EXPECT_EQ(scene.pour.dynamic_friction, 0.0);
-  EXPECT_FALSE(scene.pour.cohesion);
-  EXPECT_FALSE(scene.pour.damping);
+  EXPECT_EQ(scene.grains.count, 12);
+  EXPECT_EQ(scene.grains.body, xpbd::BodyKind::kSoft);
+  EXPECT_EQ(scene.grains.young, 2e5);
+  EXPECT_TRUE(scene.solver.vertex_block_descent);
+  EXPECT_EQ(scene.solver.frames, 7);
+  EXPECT_EQ(scene.container.kind, Container::kPlate);
+  EXPECT_EQ(scene.effects.static_friction, 0.0);
+  EXPECT_EQ(scene.effects.dynamic_friction, 0.0);
+  EXPECT_FALSE(scene.effects.cohesion);
+  EXPECT_FALSE(scene.effects.damping);
 }
 
 /// The message of reading `text` as "bad.toml" (empty when it is read).
@@ -117,7 +154,7 @@ TEST(SceneFile, MistakesNameTheFileTheLineAndTheKey) {
 }
 
 TEST(SceneFile, CollidersHaveTheirShapesSizesAndKeyframes) {
-  const SceneDescription scene = parse_scene(R"([effects]
+  const Scene scene = parse_scene(R"([effects]
 static_friction = 0.6
 dynamic_friction = 0.5
 [[colliders]]
@@ -136,12 +173,12 @@ shape = "capsule"
 radius_m = 0.01
 half_length_m = 0.03
 )", "s.toml");
-  ASSERT_EQ(scene.pour.colliders.size(), 3u);
-  const xpbd::Collider& lid = scene.pour.colliders[0];
+  ASSERT_EQ(scene.colliders.size(), 3u);
+  const xpbd::Collider& lid = scene.colliders[0];
   EXPECT_EQ(lid.shape, xpbd::ColliderShape::kHalfSpace);
   EXPECT_NEAR((lid.motion[0].rotation * xpbd::Vec3::UnitZ() + xpbd::Vec3::UnitZ()).norm(), 0.0, 1e-12);  // facing down
   EXPECT_EQ(lid.static_friction, 0.6);  // the grains' by default
-  const xpbd::Collider& hand = scene.pour.colliders[1];
+  const xpbd::Collider& hand = scene.colliders[1];
   EXPECT_EQ(hand.shape, xpbd::ColliderShape::kBox);
   EXPECT_EQ(hand.half_extents, xpbd::Vec3(0.03, 0.02, 0.005));
   EXPECT_EQ(hand.static_friction, 0.2);
@@ -149,8 +186,8 @@ half_length_m = 0.03
   ASSERT_EQ(hand.motion.size(), 2u);
   EXPECT_EQ(hand.motion[1].time, 1.5);
   EXPECT_NEAR((hand.motion[1].rotation * xpbd::Vec3::UnitX() - xpbd::Vec3::UnitY()).norm(), 0.0, 1e-12);
-  EXPECT_EQ(scene.pour.colliders[2].half_length, 0.03);
-  EXPECT_NO_THROW(validate(scene.pour));
+  EXPECT_EQ(scene.colliders[2].half_length, 0.03);
+  EXPECT_NO_THROW(validate(scene));
 
   const std::string box = "[[colliders]]\nshape = \"box\"\n";
   EXPECT_TRUE(error_of("[[colliders]]\nradius_m = 1\n").starts_with("bad.toml:1: [colliders.1] needs a shape"));
@@ -167,7 +204,7 @@ half_length_m = 0.03
 TEST(SceneFile, MeshCollidersAndTheFillReadTheirFilesFromTheScenesFolder) {
   // Paths are from the scene file's folder; the file is read, checked closed and scaled.
   const std::string scene_path = std::string(RICE_SCENES_DIR) + "/test.toml";
-  const SceneDescription scene = parse_scene(R"([emitter]
+  const Scene scene = parse_scene(R"([emitter]
 kind = "fill"
 mould = 2
 round_s = 0.25
@@ -182,17 +219,18 @@ hollow = true
 grid_spacing_m = 5e-4
 removed_at_s = 4.5
 )", scene_path);
-  ASSERT_EQ(scene.pour.mesh_colliders.size(), 1u);
-  ASSERT_EQ(scene.pour.colliders.size(), 1u);
-  const MeshCollider& mould = scene.pour.mesh_colliders[0];
+  ASSERT_EQ(scene.mesh_colliders.size(), 1u);
+  ASSERT_EQ(scene.colliders.size(), 1u);
+  const MeshCollider& mould = scene.mesh_colliders[0];
   EXPECT_TRUE(mould.hollow);
   EXPECT_EQ(mould.grid_spacing, 5e-4);
   EXPECT_EQ(mould.collider.removal_time, 4.5);
   EXPECT_NEAR(mould.mesh.V.col(2).maxCoeff(), 2 * 0.04, 1e-9);  // the shari mould is 4 cm tall
-  EXPECT_EQ(scene.pour.fill_mould, 0);
-  EXPECT_EQ(scene.pour.fill_round_seconds, 0.25);
-  EXPECT_TRUE(std::isinf(scene.pour.colliders[0].removal_time));
-  EXPECT_NO_THROW(validate(scene.pour));
+  EXPECT_EQ(scene.emitter.kind, EmitterKind::kFill);
+  EXPECT_EQ(scene.emitter.mould, 0);
+  EXPECT_EQ(scene.emitter.round_seconds, 0.25);
+  EXPECT_TRUE(std::isinf(scene.colliders[0].removal_time));
+  EXPECT_NO_THROW(validate(scene));
 
   const auto error_at = [&](const std::string& text) {
     try {
@@ -212,7 +250,7 @@ removed_at_s = 4.5
   EXPECT_NE(error_at(mesh + "file = \"" + open.string() + "\"\n").find("expected a closed triangle mesh"), std::string::npos);
   EXPECT_NE(error_at("[[colliders]]\nshape = \"box\"\nhalf_extents_m = [1, 1, 1]\nfile = \"x.obj\"\n").find("has no key 'file'"),
             std::string::npos);
-  EXPECT_NE(error_at("[[colliders]]\nshape = \"plane\"\nremoved_at_s = 0\n").find("removed_at_s = 0: expected a time in (0, 1e4] s"),
+  EXPECT_NE(error_at("[[colliders]]\nshape = \"plane\"\nremoved_at_s = 0\n").find("removed_at_s = 0: expected a number in (0, 10000]"),
             std::string::npos);
   EXPECT_NE(error_at("[emitter]\nkind = \"fill\"\n").find("[emitter] kind = 'fill' needs mould"), std::string::npos);
   EXPECT_NE(error_at("[emitter]\nkind = \"fill\"\nmould = 1\n[[colliders]]\nshape = \"plane\"\n")
@@ -224,7 +262,7 @@ removed_at_s = 4.5
 }
 
 TEST(SceneFile, RenderSectionSetsTheImageAndTheCamera) {
-  const SceneDescription scene = parse_scene(R"([render]
+  const Scene scene = parse_scene(R"([render]
 width = 320
 height = 200
 samples_per_pixel = 8
@@ -245,9 +283,9 @@ fov_deg = 40
 }
 
 TEST(SceneFile, OverridesReplaceOrAddKeysAndAreCheckedTheSameWay) {
-  const SceneDescription scene = parse_scene("[grains]\ncount = 800\n", "s.toml", {"grains.count=40", "solver.frames=5"});
-  EXPECT_EQ(scene.pour.count, 40);
-  EXPECT_EQ(scene.pour.frames, 5);
+  const Scene scene = parse_scene("[grains]\ncount = 800\n", "s.toml", {"grains.count=40", "solver.frames=5"});
+  EXPECT_EQ(scene.grains.count, 40);
+  EXPECT_EQ(scene.solver.frames, 5);
   EXPECT_TRUE(error_of("", {"grains.count=-1"}).starts_with("--set grains.count=-1:1: [grains] count = -1: expected"));
   EXPECT_TRUE(error_of("", {"grains.colour=2"}).starts_with("--set grains.colour=2:1: [grains] has no key 'colour'"));
   EXPECT_TRUE(error_of("", {"count=40"}).starts_with("--set count=40: expected section.key=value"));
@@ -273,8 +311,8 @@ TEST(SceneFile, RunWritesTheRunWithItsSceneAndABadSceneWritesNothing) {
   };
   EXPECT_EQ(bytes(out / "render_frames" / "frame_0003.png"), bytes(out / "render" / "render.png"));
   // The copy reads back as the scene it ran.
-  const SceneDescription copy = read_scene_file(out / "scene.toml");
-  EXPECT_EQ(copy.pour.count, 800);  // the file's own value; the overrides are listed below it
+  const Scene copy = read_scene_file(out / "scene.toml");
+  EXPECT_EQ(copy.grains.count, 800);  // the file's own value; the overrides are listed below it
 }
 
 TEST(SceneFile, GrainsThatMissTheBowlStayOutOfItsMeasures) {
@@ -288,8 +326,8 @@ TEST(SceneFile, GrainsThatMissTheBowlStayOutOfItsMeasures) {
                         {"grains.count=30", "grains.variants=2", "solver.frames=20", "container.scale=0.1",
                          "render.width=16", "render.height=16", "render.samples_per_pixel=1"},
                         out);
-  EXPECT_LT(result.pour.in_container, 30);
-  EXPECT_GE(result.pour.in_container, 0);
+  EXPECT_LT(result.in_container, 30);
+  EXPECT_GE(result.in_container, 0);
   EXPECT_TRUE(std::filesystem::exists(out / "render" / "render.png"));
 }
 
@@ -300,11 +338,11 @@ TEST(SceneFile, TheMouldScenesRunShortAndEveryGrainFindsRoom) {
     SCOPED_TRACE(name);
     const std::filesystem::path out = std::filesystem::path(RICE_TEST_SCRATCH) / (std::string("scene-") + name);
     std::filesystem::remove_all(out);
-    const PourResult result = run_scene_command(
+    const SceneResult result = run_scene_command(
         std::filesystem::path(RICE_SCENES_DIR) / (std::string(name) + ".toml"),
         {"grains.count=40", "grains.variants=2", "solver.frames=3", "render.width=32", "render.height=24",
          "render.samples_per_pixel=1"},
-        out).pour;
+        out);
     EXPECT_GT(result.top, 0.0);
     EXPECT_LT(result.top, mould_top);
     std::ifstream info(out / "run_info.txt");

@@ -1,18 +1,21 @@
-# `rice pour` end to end on a small scene: 30 rigid grains for 20 frames write a stats row
+# `rice run` end to end on a short chawan: 30 rigid grains for 20 frames write a stats row
 # per frame, a pose file per frame, the chawan OBJ and the final pile; the same seed gives
-# the same poses twice; a bad setting exits non-zero and leaves no folder.
-# Called by CTest with -DRICE=<rice binary> -DOUT=<scratch folder>.
+# the same poses twice (on all cores); a bad setting exits non-zero and leaves no folder.
+# Called by CTest with -DRICE=<rice binary> -DSCENE=<chawan.toml> -DOUT=<scratch folder>.
 file(REMOVE_RECURSE "${OUT}")
+set(short --set grains.count=30 --set grains.variants=2 --set solver.frames=20 --set emitter.seconds=0.2
+          --set render.width=32 --set render.height=24 --set render.samples_per_pixel=1)
 foreach(run a b)
-  execute_process(COMMAND "${RICE}" pour --count 30 --variants 2 --frames 20 --pour-seconds 0.2 --out "${OUT}/${run}"
+  execute_process(COMMAND "${RICE}" run "${SCENE}" ${short} --out "${OUT}/${run}"
                   RESULT_VARIABLE result ERROR_VARIABLE error OUTPUT_QUIET)
   if(NOT result EQUAL 0)
-    message(FATAL_ERROR "rice pour exited with ${result}: ${error}")
+    message(FATAL_ERROR "rice run exited with ${result}: ${error}")
   endif()
 endforeach()
-foreach(name chawan.obj stats.csv final_centres.csv run_info.txt frames/frame_0001.csv frames/frame_0020.csv)
+foreach(name scene.toml chawan.obj stats.csv final_centres.csv run_info.txt frames/frame_0001.csv frames/frame_0020.csv
+             render/render.png)
   if(NOT EXISTS "${OUT}/a/${name}")
-    message(FATAL_ERROR "rice pour did not write ${name}")
+    message(FATAL_ERROR "rice run did not write ${name}")
   endif()
 endforeach()
 file(STRINGS "${OUT}/a/stats.csv" rows)
@@ -42,7 +45,8 @@ endforeach()
 if(differences)
   message(FATAL_ERROR "same seed, different results:${differences}")
 endif()
-execute_process(COMMAND "${RICE}" pour --count 30 --dynamic-friction 0.9 --static-friction 0.5 --out "${OUT}/bad"
+execute_process(COMMAND "${RICE}" run "${SCENE}" ${short} --set effects.dynamic_friction=0.9 --set effects.static_friction=0.5
+                        --out "${OUT}/bad"
                 RESULT_VARIABLE result OUTPUT_QUIET ERROR_QUIET)
 if(result EQUAL 0 OR EXISTS "${OUT}/bad")
   message(FATAL_ERROR "dynamic friction above static was accepted or left a folder")

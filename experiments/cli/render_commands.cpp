@@ -1,0 +1,117 @@
+// `rice render`: its options (what to render, the image, the camera, the lights) mapped onto
+// RenderCommandSettings.
+#include <CLI/CLI.hpp>
+
+#include "experiments/cli/command_family.hpp"
+#include "experiments/cli/option_checks.hpp"
+#include "experiments/render/render_command.hpp"
+
+namespace rice::experiments {
+namespace {
+
+class RenderCommands : public CommandFamily {
+ public:
+  explicit RenderCommands(CLI::App& app) {
+    CLI::App* c = app.add_subcommand("render", "grain meshes rendered as cooked rice with the CDRF (PNG and EXR)");
+    add_inputs_and_image(c);
+    add_camera(c);
+    add_lights(c);
+    add(c, [this] { experiments::validate(settings()); }, [this] { render_command(settings(), out_); });
+  }
+
+ private:
+  void add_inputs_and_image(CLI::App* c) {
+    c->add_option("--meshes", meshes_, "mesh files (PLY, OBJ), or folders of them");
+    c->add_option("--run", run_, "or: the output folder of a scene run of rigid grains (rice run)");
+    c->add_option("--frame", render_.frame, "the run's frame (0: the last)")->check(number_in(0, 1e6))
+        ->capture_default_str();
+    c->add_flag("--every-frame", render_.every_frame, "every frame of the run into frame_NNNN.png, framed as the last");
+    c->add_option("--out", out_, "output folder")->capture_default_str();
+    c->add_option("--absorption", render_.absorption_percent, "water absorption W [%]: sigma0 and albedo")
+        ->check(number_in(0, 100))->capture_default_str();
+    c->add_option("--width", render_.render.width, "pixels")->check(number_in(1, 16384))->capture_default_str();
+    c->add_option("--height", render_.render.height, "pixels")->check(number_in(1, 16384))->capture_default_str();
+    c->add_option("--spp", render_.render.samples_per_pixel, "samples per pixel")->check(number_in(1, 1 << 20))
+        ->capture_default_str();
+    c->add_option("--sampler", sampler_, "sobol, stratified or independent")
+        ->check(CLI::IsMember({"sobol", "stratified", "independent"}))->capture_default_str();
+    c->add_option("--seed", render_.render.seed, "random seed")->check(seed_value())->capture_default_str();
+    c->add_flag("--no-shadows", no_shadows_, "lights are not blocked");
+    c->add_flag("--no-ao", no_ao_, "the sky is not blocked (no ambient occlusion)");
+    c->add_flag("--no-ground", no_ground_, "no grey plane under the meshes");
+    c->add_flag("--side-by-side", side_by_side_, "lay the meshes out in a row along x");
+    c->add_option("--exposure", render_.exposure, "stops, for the PNG")->check(number_in(-30, 30))->capture_default_str();
+  }
+
+  void add_camera(CLI::App* c) {
+    c->add_option("--eye", eye_, "camera position x y z [m] (default: framed)")->expected(3)->check(number_in(-1e6, 1e6));
+    c->add_option("--look-at", look_at_, "camera target x y z [m]")->expected(3)->check(number_in(-1e6, 1e6));
+    c->add_option("--fov", fov_, "vertical field of view [degrees]")->check(number_in(0, 170, Ends::kOpenLow))
+        ->capture_default_str();
+    c->add_option("--aperture", aperture_, "thin-lens aperture radius [m] (0: pinhole)")->check(number_in(0, 10))
+        ->capture_default_str();
+    c->add_option("--focus", focus_, "focus distance [m] (0: the look-at point)")->check(number_in(0, 1e6))
+        ->capture_default_str();
+  }
+
+  void add_lights(CLI::App* c) {
+    c->add_option("--sun-elevation", render_.sun_elevation_degrees, "[degrees]")->check(number_in(-90, 90))
+        ->capture_default_str();
+    c->add_option("--sun-azimuth", render_.sun_azimuth_degrees, "[degrees] from +x towards +y")
+        ->check(number_in(-360, 360))->capture_default_str();
+    c->add_option("--sun-irradiance", render_.sun_irradiance, "at normal incidence (0: no sun)")
+        ->check(number_in(0, 1e6))->capture_default_str();
+    c->add_option("--sun-diameter", render_.sun_diameter_degrees, "angular diameter [degrees]")
+        ->check(number_in(0, 90, Ends::kOpenLow))->capture_default_str();
+    c->add_option("--area-light", area_,
+                  "a parallelogram light: corner x y z, edge u x y z, edge v x y z, radiance; it shines towards v x u; "
+                  "repeatable")
+        ->expected(10)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)->check(number_in(-1e6, 1e6));
+    c->add_option("--sky", render_.sky_radiance, "uniform sky radiance")->check(number_in(0, 1e6))->capture_default_str();
+    c->add_option("--sky-image", sky_image_, "latitude-longitude OpenEXR sky, z up");
+  }
+
+  RenderCommandSettings settings() const {
+    RenderCommandSettings s = render_;
+    s.meshes.assign(meshes_.begin(), meshes_.end());
+    s.run = run_;
+    s.render.sampler = sampler_ == "stratified"    ? shading::SamplerKind::kStratified
+                       : sampler_ == "independent" ? shading::SamplerKind::kIndependent
+                                                   : shading::SamplerKind::kSobol;
+    s.render.shadows = !no_shadows_;
+    s.render.ambient_occlusion = !no_ao_;
+    s.ground = !no_ground_;
+    s.side_by_side = side_by_side_;
+    s.sky_image = sky_image_;
+    for (size_t k = 0; k + 10 <= area_.size(); k += 10) {
+      const auto& a = area_;
+      s.area_lights.push_back({.corner = Eigen::Vector3f(a[k], a[k + 1], a[k + 2]),
+                               .edge_u = Eigen::Vector3f(a[k + 3], a[k + 4], a[k + 5]),
+                               .edge_v = Eigen::Vector3f(a[k + 6], a[k + 7], a[k + 8]),
+                               .radiance = shading::Color::Constant(static_cast<float>(a[k + 9]))});
+    }
+    if (!eye_.empty() || !look_at_.empty()) {
+      shading::Camera camera;
+      if (eye_.size() == 3) camera.position = {eye_[0], eye_[1], eye_[2]};
+      if (look_at_.size() == 3) camera.target = {look_at_[0], look_at_[1], look_at_[2]};
+      camera.vertical_fov_degrees = fov_;
+      camera.aperture_radius = aperture_;
+      camera.focus_distance = focus_;
+      s.camera = camera;
+    }
+    return s;
+  }
+
+  RenderCommandSettings render_;
+  std::string out_ = "out/render", sampler_ = "sobol", sky_image_, run_;
+  std::vector<std::string> meshes_;
+  std::vector<double> eye_, look_at_, area_;
+  double fov_ = 30.0, aperture_ = 0.0, focus_ = 0.0;
+  bool no_shadows_ = false, no_ao_ = false, no_ground_ = false, side_by_side_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<CommandFamily> add_render_commands(CLI::App& app) { return std::make_unique<RenderCommands>(app); }
+
+}  // namespace rice::experiments

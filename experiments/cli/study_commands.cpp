@@ -1,0 +1,218 @@
+// `rice study ...`: one function per study, each adding its options and saying how it is
+// checked and run.
+#include <CLI/CLI.hpp>
+
+#include "experiments/cli/command_family.hpp"
+#include "experiments/cli/option_checks.hpp"
+#include "experiments/studies/cdrf_study.hpp"
+#include "experiments/studies/contact_study.hpp"
+#include "experiments/studies/convergence_study.hpp"
+#include "experiments/studies/grain_substep_study.hpp"
+#include "experiments/studies/oscillator_study.hpp"
+#include "experiments/studies/pour_substep_study.hpp"
+#include "experiments/studies/render_study.hpp"
+#include "experiments/studies/xpbd_stiffness_study.hpp"
+
+namespace rice::experiments {
+namespace {
+
+class StudyCommands : public CommandFamily {
+ public:
+  explicit StudyCommands(CLI::App& app) {
+    CLI::App* study = app.add_subcommand("study", "convergence, stiffness and validation studies");
+    study->require_subcommand(1);
+    add_cdrf(study);
+    add_render(study);
+    add_pour_substeps(study);
+    add_grain_substeps(study);
+    add_contact(study);
+    add_stiffness(study);
+    add_oscillator(study);
+    add_convergence(study);
+  }
+
+ private:
+  void add_cdrf(CLI::App* study) {
+    CLI::App* c = study->add_subcommand("cdrf", "sigma0 of the CDRF fitted to a random-walk reference per water content");
+    c->add_option("--out", cdrf_out_, "output folder")->capture_default_str();
+    c->add_option("--soak-minutes", cdrf_.soak_minutes, "soak times, one water content each")
+        ->check(number_in(0, 1e4, Ends::kOpenLow))->capture_default_str();
+    c->add_option("--temperature", cdrf_.temperature_c, "soaking water [°C]")->check(number_in(0, 100))
+        ->capture_default_str();
+    c->add_option("--radii-mm", cdrf_.radii_mm, "sphere radii [mm]")->check(number_in(0, 100, Ends::kOpenLow))
+        ->capture_default_str();
+    c->add_option("--photons", cdrf_.photons, "photons per sphere")->check(number_in(1000, 1e9))->capture_default_str();
+    c->add_option("--grain-photons", cdrf_.grain_photons, "photons on the grain mesh check (0: none)")
+        ->check(number_in(0, 1e9))->capture_default_str();
+    c->add_option("--bins", cdrf_.bins, "theta bins over [0, pi]")->check(number_in(4, 1000))->capture_default_str();
+    c->add_option("--seed", cdrf_.seed, "random seed")->check(seed_value())->capture_default_str();
+    add(c, [this] { experiments::validate(cdrf_); }, [this] { cdrf_study_command(cdrf_, cdrf_out_); });
+  }
+
+  void add_render(CLI::App* study) {
+    CLI::App* c =
+        study->add_subcommand("render", "image error against time: samplers, and the CDRF against the random walk");
+    RenderStudySettings& s = render_;
+    c->add_option("--out", render_out_, "output folder")->capture_default_str();
+    c->add_option("--width", s.width, "pixels")->check(number_in(8, 4096))->capture_default_str();
+    c->add_option("--height", s.height, "pixels")->check(number_in(8, 4096))->capture_default_str();
+    c->add_option("--grains", s.grains, "grains on the plate")->check(number_in(1, 10000))->capture_default_str();
+    c->add_option("--samples", s.samples, "samples per pixel to sweep")->check(number_in(1, 65536))
+        ->capture_default_str();
+    c->add_option("--reference-spp", s.reference_spp, "samples of the reference image")
+        ->check(number_in(1, 1 << 20))->capture_default_str();
+    c->add_option("--photons", s.photons, "random-walk photons per grain and light to sweep")
+        ->check(number_in(1000, 1e9))->capture_default_str();
+    c->add_option("--bake-spp", s.bake_render_spp, "samples of the random-walk renders")
+        ->check(number_in(1, 65536))->capture_default_str();
+    c->add_option("--seed", s.seed, "random seed")->check(seed_value())->capture_default_str();
+    add(c, [this] { experiments::validate(render_); }, [this] { render_study_command(render_, render_out_); });
+  }
+
+  void add_pour_substeps(CLI::App* study) {
+    CLI::App* c = study->add_subcommand("pour-substeps", "the pour's overlaps against wall time over substeps");
+    c->add_option("--out", pour_substeps_out_, "output folder")->capture_default_str();
+    c->add_option("--substeps", pour_substeps_.substeps, "substep counts per frame")->check(number_in(1, 1e4))
+        ->capture_default_str();
+    c->add_option("--count", pour_substeps_.scene.grains.count, "grains")->check(number_in(1, 1e5))
+        ->capture_default_str();
+    c->add_option("--frames", pour_substeps_.scene.solver.frames, "frames")->check(number_in(1, 1e5))
+        ->capture_default_str();
+    c->add_option("--body", pour_substeps_body_, "rigid or soft")->check(CLI::IsMember({"rigid", "soft"}))
+        ->capture_default_str();
+    c->add_flag("--no-cohesion", pour_substeps_no_cohesion_, "no water-content bonds");
+    add(c, [this] { experiments::validate(pour_substeps_settings()); },
+        [this] { pour_substep_study_command(pour_substeps_settings(), pour_substeps_out_); });
+  }
+
+  PourSubstepStudySettings pour_substeps_settings() const {
+    PourSubstepStudySettings settings = pour_substeps_;
+    settings.scene.grains.body = pour_substeps_body_ == "soft" ? xpbd::BodyKind::kSoft : xpbd::BodyKind::kRigid;
+    settings.scene.effects.cohesion = !pour_substeps_no_cohesion_;
+    return settings;
+  }
+
+  void add_grain_substeps(CLI::App* study) {
+    CLI::App* c = study->add_subcommand(
+        "grain-substeps", "one soft grain at rest: largest stable substep and its error, XPBD and vertex block descent");
+    GrainSubstepStudySettings& s = grain_substeps_;
+    c->add_option("--out", grain_substeps_out_, "output folder")->capture_default_str();
+    c->add_option("--substeps", s.substeps, "substep counts per 1/60 s frame")->check(number_in(1, 1e4))
+        ->capture_default_str();
+    c->add_option("--xpbd-iterations", s.xpbd_iterations, "XPBD iteration counts")->check(number_in(1, 1000))
+        ->capture_default_str();
+    c->add_option("--vbd-iterations", s.vbd_iterations, "vertex block descent sweep counts")
+        ->check(number_in(1, 1000))->capture_default_str();
+    c->add_option("--frames", s.frames, "frames of 1/60 s")->check(number_in(1, 1e5))->capture_default_str();
+    c->add_option("--young", s.young, "Young's modulus [Pa]")->check(number_in(1, 1e12))->capture_default_str();
+    c->add_option("--seed", s.seed, "grain seed")->check(seed_value())->capture_default_str();
+    add(c, [this] { experiments::validate(grain_substeps_); },
+        [this] { grain_substep_study_command(grain_substeps_, grain_substeps_out_); });
+  }
+
+  void add_contact(CLI::App* study) {
+    CLI::App* c = study->add_subcommand(
+        "contact", "Hertz: a soft half sphere pressed on the ground, reference and vertex block descent");
+    c->add_option("--out", contact_out_, "output folder")->capture_default_str();
+    c->add_flag("--quick", contact_quick_, "two coarse meshes and two depths, for CI (seconds)");
+    contact_depths_ = c->add_option("--depths", contact_.depths, "depths d/R, increasing")
+                          ->check(number_in(1e-4, 0.49))->capture_default_str();
+    contact_edges_ = c->add_option("--contact-edges", contact_.contact_edges,
+                                   "edge lengths of the half sphere's mesh where it touches / R, coarse to fine")
+                         ->check(number_in(0.005, 0.25))->capture_default_str();
+    c->add_option("--young", contact_.young, "Young's modulus [Pa]")->check(number_in(1, 1e12))->capture_default_str();
+    c->add_option("--vbd-iterations", contact_.vbd_iterations, "sweeps per step")->check(number_in(1, 1000))
+        ->capture_default_str();
+    contact_steps_ = c->add_option("--vbd-steps", contact_.vbd_steps, "steps of 1/60 s per depth")
+                         ->check(number_in(1, 100000))->capture_default_str();
+    add(c, [this] { experiments::validate(contact_settings()); }, [this] { contact_study_command(contact_settings(), contact_out_); });
+  }
+
+  /// --quick's settings, then the options given.
+  ContactStudySettings contact_settings() const {
+    ContactStudySettings settings = contact_quick_ ? ContactStudySettings::quick() : ContactStudySettings{};
+    if (contact_depths_->count()) settings.depths = contact_.depths;
+    if (contact_edges_->count()) settings.contact_edges = contact_.contact_edges;
+    settings.young = contact_.young;
+    settings.vbd_iterations = contact_.vbd_iterations;
+    if (contact_steps_->count()) settings.vbd_steps = contact_.vbd_steps;
+    return settings;
+  }
+
+  void add_stiffness(CLI::App* study) {
+    CLI::App* c =
+        study->add_subcommand("xpbd-stiffness", "cantilever rest deflection vs iteration count, XPBD against PBD");
+    c->add_option("--out", stiffness_out_, "output folder")->capture_default_str();
+    c->add_option("--iterations", stiffness_.iterations, "iteration counts")->check(number_in(1, 1000))
+        ->capture_default_str();
+    c->add_option("--substeps", stiffness_.substeps, "substeps per 1/60 s frame")->check(number_in(1, 10000))
+        ->capture_default_str();
+    c->add_option("--young", stiffness_.young, "Young's modulus [Pa]")->check(number_in(1, 1e12))
+        ->capture_default_str();
+    c->add_option("--pbd-stiffness", stiffness_.pbd_stiffness, "PBD stiffness k")
+        ->check(number_in(0, 1, Ends::kOpenLow))->capture_default_str();
+    add(c, [this] { experiments::validate(stiffness_); }, [this] { stiffness_study_command(stiffness_, stiffness_out_); });
+  }
+
+  void add_oscillator(CLI::App* study) {
+    CLI::App* c = study->add_subcommand("oscillator", "spring-mass period and decay vs analytic, over substeps per frame");
+    c->add_option("--out", oscillator_out_, "output folder")->capture_default_str();
+    c->add_option("--damping", oscillator_.damping, "beta [N s/m], below critical (2 sqrt(k m) = 20)")
+        ->check(number_in(0, 1e6))->capture_default_str();
+    c->add_option("--substeps", oscillator_.substeps, "substeps per frame to sweep")->check(number_in(1, 10000))
+        ->capture_default_str();
+    add(c, [this] { experiments::validate(oscillator_); }, [this] { oscillator_study_command(oscillator_, oscillator_out_); });
+  }
+
+  void add_convergence(CLI::App* study) {
+    CLI::App* c = study->add_subcommand("convergence",
+                                        "XPBD error against the reference solver over substeps, iterations, resolution");
+    c->add_option("--out", convergence_out_, "output folder")->capture_default_str();
+    c->add_flag("--quick", convergence_quick_, "reduced grid for CI (under a minute)");
+    duration_ = c->add_option("--duration", convergence_.duration, "simulated time [s], >= 1/60")
+                    ->check(number_in(1.0 / 60.0, 60))->capture_default_str();
+    young_ = c->add_option("--young", convergence_.bar.young, "Young's modulus [Pa]")->check(number_in(1, 1e12))
+                 ->capture_default_str();
+    tau_ = c->add_option("--rayleigh-time", convergence_.rayleigh_time, "tau of the damped runs [s]")
+               ->check(number_in(0, 10, Ends::kOpenLow))->capture_default_str();
+    add(c, [this] { experiments::validate(convergence_settings()); },
+        [this] { convergence_study_command(convergence_settings(), convergence_out_); });
+  }
+
+  /// --quick's settings, then the options given.
+  ConvergenceSettings convergence_settings() const {
+    ConvergenceSettings settings = convergence_quick_ ? ConvergenceSettings::quick() : ConvergenceSettings{};
+    if (duration_->count()) settings.duration = convergence_.duration;
+    if (young_->count()) settings.bar.young = convergence_.bar.young;
+    if (tau_->count()) settings.rayleigh_time = convergence_.rayleigh_time;
+    return settings;
+  }
+
+  CdrfStudySettings cdrf_;
+  std::string cdrf_out_ = "out/cdrf";
+  RenderStudySettings render_;
+  std::string render_out_ = "out/render-study";
+  PourSubstepStudySettings pour_substeps_;
+  std::string pour_substeps_out_ = "out/pour-substeps", pour_substeps_body_ = "rigid";
+  bool pour_substeps_no_cohesion_ = false;
+  GrainSubstepStudySettings grain_substeps_;
+  std::string grain_substeps_out_ = "out/grain-substeps";
+  ContactStudySettings contact_;
+  std::string contact_out_ = "out/contact";
+  bool contact_quick_ = false;
+  CLI::Option *contact_depths_ = nullptr, *contact_edges_ = nullptr, *contact_steps_ = nullptr;
+  StiffnessStudySettings stiffness_;
+  std::string stiffness_out_ = "out/xpbd-stiffness";
+  OscillatorSettings oscillator_;
+  std::string oscillator_out_ = "out/oscillator";
+  ConvergenceSettings convergence_;
+  std::string convergence_out_ = "out/convergence";
+  bool convergence_quick_ = false;
+  CLI::Option *duration_ = nullptr, *young_ = nullptr, *tau_ = nullptr;
+};
+
+}  // namespace
+
+std::unique_ptr<CommandFamily> add_study_commands(CLI::App& app) { return std::make_unique<StudyCommands>(app); }
+
+}  // namespace rice::experiments

@@ -1,0 +1,61 @@
+// The pieces of a rice render; see scene_pieces.hpp.
+#include "experiments/render/scene_pieces.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "grains/water_content.hpp"
+#include "shading/curvature.hpp"
+
+namespace rice::experiments {
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+}  // namespace
+
+shading::Material rice_material(double absorption_percent) {
+  return {.kind = shading::MaterialKind::kRice,
+          .albedo = shading::Color::Constant(static_cast<float>(grains::WaterContentModel::cdrf_albedo(absorption_percent))),
+          .sigma0 = grains::WaterContentModel::scattering_sigma0(absorption_percent),
+          .refractive_index = grains::WaterContentModel::optics(absorption_percent).refractive_index,
+          .roughness = 0.25};
+}
+
+shading::Medium grain_medium(double absorption_percent) {
+  const grains::GrainOptics optics = grains::WaterContentModel::optics(absorption_percent);
+  return {optics.reduced_scattering, optics.absorption, 0.0, optics.refractive_index};
+}
+
+int add_grain_prototype(shading::RenderScene& scene, const shading::MeshVertices& V, const shading::MeshTriangles& F) {
+  return scene.add_prototype(V, F, shading::vertex_mean_curvature(V, F));
+}
+
+void add_ground(shading::RenderScene& scene, double x0, double y0, double x1, double y1, double z, int material) {
+  shading::MeshVertices V(4, 3);
+  V << x0, y0, z, x1, y0, z, x1, y1, z, x0, y1, z;
+  shading::MeshTriangles F(2, 3);
+  F << 0, 1, 2, 0, 2, 3;
+  scene.add_instance(scene.add_prototype(V, F), Eigen::Affine3d::Identity(), material);
+}
+
+Eigen::Vector3d direction_from(double elevation_degrees, double azimuth_degrees) {
+  const double e = elevation_degrees * kDegree, a = azimuth_degrees * kDegree;
+  return {std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e)};
+}
+
+shading::Camera framing_camera(const Eigen::AlignedBox3f& bounds, double elevation_degrees, double azimuth_degrees,
+                               double vertical_fov_degrees, double aspect) {
+  const Eigen::Vector3d centre = bounds.center().cast<double>();
+  const double radius = 0.5 * bounds.diagonal().norm();
+  const double half = 0.5 * vertical_fov_degrees * kDegree;
+  const double fit = std::min(std::tan(half), std::tan(half) * aspect);  // the narrower side
+  shading::Camera camera;
+  camera.target = centre;
+  camera.position = centre + direction_from(elevation_degrees, azimuth_degrees) * (1.05 * radius / std::sin(std::atan(fit)));
+  camera.vertical_fov_degrees = vertical_fov_degrees;
+  return camera;
+}
+
+}  // namespace rice::experiments

@@ -1,0 +1,141 @@
+// A scene as its file describes it: one struct per section of the file (scene_file.hpp reads
+// one; scene_keys.hpp lists every key with its type, default, range and meaning). The
+// defaults below are the scene files' defaults: a test reads an empty file and compares.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "grains/mesh_types.hpp"
+#include "xpbd/body.hpp"
+#include "xpbd/collider.hpp"
+
+namespace rice::experiments {
+
+/// Where the grains land: into the chawan (grains/chawan.hpp), or onto a flat plate (the
+/// ground plane).
+enum class Container { kChawan, kPlate };
+
+/// How the grains enter the scene (emitter.hpp).
+enum class EmitterKind {
+  kSpout,  ///< a stream: layer after layer over `seconds`
+  kClump,  ///< every layer at once, stacked: a clump dropped whole
+  kFill,   ///< a hollow mesh collider filled in rounds (mould_fill.hpp)
+};
+
+/// [grains]: what the grains are.
+struct SceneGrains {
+  std::string cultivar = "japonica";
+  int count = 800;
+  int variants = 8;  ///< distinct generated grains, instanced
+  std::uint64_t seed = 1;
+  xpbd::BodyKind body = xpbd::BodyKind::kRigid;
+  double young = 1e5;  ///< soft grains [Pa]: cooked rice kernels are soft (0.1–1 MPa; ESTIMATE)
+  double poisson = 0.3;
+  double soak_minutes = 120.0;     ///< sets damping (soft) and cohesion
+  double soak_temperature = 10.0;  ///< [°C]
+  /// Pull-off force of two touching grains at the reference soak, in grain weights
+  /// (grains::Cultivar::stickiness); NaN: the cultivar's.
+  double stickiness = std::nan("");
+};
+
+/// [solver]: how time advances.
+struct SceneSolver {
+  double fps = 30.0;
+  int frames = 180;
+  /// 0: 80 for rigid grains, which keeps the resting pile's penetrations under 5% of a grain's
+  /// thickness (measured: 20 left 29%, 40 left 6.5%), and 480 for soft ones at 30 fps, under
+  /// the Neo-Hookean pair's stability limit on the grains' sliver tets at E = 100 kPa
+  /// (measured: one soft grain in the chawan bounces for ever at 240 substeps and sleeps
+  /// within 30 frames at 480; docs/known-limits.md).
+  int substeps = 0;
+  int iterations = 1;
+  /// Soft grains' tets by vertex block descent (xpbd::Method::kVbd) instead of XPBD's
+  /// projections. Experimental: cohesive bonds stay projections after each sweep, and with
+  /// them a pile gains energy (docs/known-limits.md; without cohesion it settles).
+  bool vertex_block_descent = false;
+};
+
+/// [container]: what holds the grains.
+struct SceneContainer {
+  Container kind = Container::kChawan;
+  double grid_spacing = 1e-3;  ///< the chawan's distance grid [m]
+  /// The chawan's sizes times this (1: a rice bowl 12 cm across; 800 grains only cover its
+  /// bottom, 0.45 heaps them).
+  double scale = 1.0;
+};
+
+/// [emitter]: how the grains enter.
+struct SceneEmitter {
+  EmitterKind kind = EmitterKind::kSpout;
+  /// Spout and clump: the opening's height above the chawan's rim or the plate [m], its radius
+  /// [m] (0: the container's: on a plate 1.1 grain lengths, a narrow stream; in a chawan 0.6 of
+  /// the bowl's inner radius less a grain length), and the time over which its layers leave
+  /// (a spout's; a clump's leave at once).
+  double height = 0.02, radius = 0.0, seconds = 1.5;
+  /// Fill: the hollow mesh collider filled (an index into Scene::mesh_colliders), in rounds
+  /// `round_seconds` apart.
+  int mould = -1;
+  double round_seconds = 0.5;
+};
+
+/// [effects]: what is simulated; what is off costs nothing.
+struct SceneEffects {
+  double static_friction = 0.5, dynamic_friction = 0.4;  ///< grain–grain and grain–container (ESTIMATE); 0: off
+  bool cohesion = true;  ///< water-content bonds between touching grains
+  bool damping = true;   ///< soft grains' Rayleigh damping τ from the soak (eq. 4); off: τ = 0
+  bool sleeping = true;
+  bool render_meshes = false;  ///< also write each frame's deformed render meshes (large)
+};
+
+/// A closed triangle mesh as a collider (`shape = "mesh"`): a mould, a lid, a hand. Its
+/// distance grid is sampled when the run starts.
+struct MeshCollider {
+  grains::SurfaceMesh mesh;    ///< in the collider's frame [m]
+  double grid_spacing = 1e-3;  ///< [m]
+  bool hollow = false;         ///< the room inside the mesh, the solid outside (a mould)
+  xpbd::Collider collider;     ///< motion, friction, removal time; shape and grid set at the start
+};
+
+/// [render]: the last frame rendered after the simulation (rigid grains), by `rice render`'s
+/// renderer with the CDRF at the grains' water content.
+struct SceneRender {
+  int width = 640, height = 480;
+  int samples_per_pixel = 16;
+  double sun_elevation_degrees = 50.0, sun_azimuth_degrees = -30.0;
+  double sun_irradiance = 3.0;  ///< 0: no sun
+  double sky_radiance = 0.3;
+  bool ground = true;
+  /// The camera, when the file gives one; otherwise it frames the grains.
+  std::optional<xpbd::Vec3> eye, look_at;
+  double vertical_fov_degrees = 30.0;
+  /// Also every frame, into render_frames/frame_NNNN.png, with the last frame's camera.
+  bool every_frame = false;
+};
+
+struct Scene {
+  std::string name;  ///< default: the file's stem
+  std::string description;
+  SceneGrains grains;
+  SceneSolver solver;
+  SceneContainer container;
+  SceneEmitter emitter;
+  SceneEffects effects;
+  /// Colliders beside the container: planes, spheres, boxes and capsules, each with its
+  /// keyframed motion, so a hand or a mould can press and withdraw; and meshes.
+  std::vector<xpbd::Collider> colliders;
+  std::vector<MeshCollider> mesh_colliders;
+  std::optional<SceneRender> render;  ///< none: no [render] section
+};
+
+/// The checks the reader makes, for a scene built in code: throws std::invalid_argument naming
+/// the section and key, the value and the range (scene_keys.hpp).
+void validate(const Scene& scene);
+
+/// scene.solver.substeps, or its default for the body kind when 0.
+int substeps_per_frame(const Scene& scene);
+
+}  // namespace rice::experiments

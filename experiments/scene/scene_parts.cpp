@@ -1,0 +1,36 @@
+// The parts of a scene run; see scene_parts.hpp.
+#include "experiments/scene/scene_parts.hpp"
+
+#include "experiments/scene/clump_emitter.hpp"
+#include "experiments/scene/fill_emitter.hpp"
+#include "experiments/scene/frames_observer.hpp"
+#include "experiments/scene/pile_observer.hpp"
+#include "experiments/scene/render_mesh_observer.hpp"
+#include "experiments/scene/scene_geometry_observer.hpp"
+#include "experiments/scene/section_observer.hpp"
+#include "experiments/scene/spout_emitter.hpp"
+#include "experiments/scene/stats_observer.hpp"
+
+namespace rice::experiments {
+
+std::unique_ptr<Emitter> make_emitter(const Scene& scene) {
+  switch (scene.emitter.kind) {
+    case EmitterKind::kSpout: return std::make_unique<SpoutEmitter>(scene.emitter, scene.container);
+    case EmitterKind::kClump: return std::make_unique<ClumpEmitter>(scene.emitter, scene.container);
+    case EmitterKind::kFill: return std::make_unique<FillEmitter>(scene);
+  }
+  return nullptr;
+}
+
+std::vector<std::unique_ptr<Observer>> make_observers(const Scene& scene, const std::filesystem::path& folder) {
+  std::vector<std::unique_ptr<Observer>> observers;
+  observers.push_back(std::make_unique<SceneGeometryObserver>(folder, scene.container.kind == Container::kChawan));
+  observers.push_back(std::make_unique<StatsObserver>(folder));
+  observers.push_back(std::make_unique<FramesObserver>(folder));
+  if (scene.effects.render_meshes) observers.push_back(std::make_unique<RenderMeshObserver>(folder));
+  observers.push_back(std::make_unique<PileObserver>(folder, scene));
+  observers.push_back(std::make_unique<SectionObserver>(folder, scene));
+  return observers;
+}
+
+}  // namespace rice::experiments

@@ -1,0 +1,78 @@
+// The pile's section and packing; see section_observer.hpp.
+#include "experiments/scene/section_observer.hpp"
+
+#include <cmath>
+
+#include "experiments/io/csv_table.hpp"
+#include "experiments/io/png_image.hpp"
+#include "experiments/pile/pile_section.hpp"
+
+namespace rice::experiments {
+namespace {
+
+/// φ of the collider's room at p, in its pose at time 0 (> 0 inside the room).
+double room_at(const xpbd::Collider& room, const xpbd::Vec3& p) {
+  const xpbd::ColliderKeyframe pose = xpbd::collider_pose(room, 0.0);
+  return xpbd::local_signed_distance(room, pose.rotation.conjugate() * (p - pose.translation)).distance;
+}
+
+}  // namespace
+
+SectionObserver::SectionObserver(const std::filesystem::path& folder, const Scene& scene)
+    : folder_(folder),
+      fill_(scene.emitter.kind == EmitterKind::kFill),
+      plate_(scene.container.kind == Container::kPlate),
+      mould_(scene.emitter.mould) {}
+
+int SectionObserver::room_collider(const World& world) const {
+  return fill_ ? world.first_mesh_collider + mould_ : plate_ ? -1 : 0;
+}
+
+void SectionObserver::cut(const World& world, const xpbd::Collider& room, const std::vector<int>& inside,
+                          SceneResult& result) const {
+  std::vector<grains::SurfaceMesh> meshes;
+  Eigen::Vector2d lower = Eigen::Vector2d::Constant(INFINITY), upper = -lower, mean = Eigen::Vector2d::Zero();
+  for (int g : inside) {
+    meshes.push_back(world.render_mesh(g));
+    lower = lower.cwiseMin(meshes.back().V.leftCols<2>().colwise().minCoeff().transpose());
+    upper = upper.cwiseMax(meshes.back().V.leftCols<2>().colwise().maxCoeff().transpose());
+    mean += world.centre(g).head<2>() / static_cast<double>(inside.size());
+  }
+  if (!fill_) {  // the whole bowl in the picture
+    lower = lower.cwiseMin(Eigen::Vector2d::Constant(-world.bowl.rim_radius));
+    upper = upper.cwiseMax(Eigen::Vector2d::Constant(world.bowl.rim_radius));
+  }
+  const double floor = fill_ ? 0.0 : world.bowl.height - world.bowl.inner_depth;
+  result.section_height = 0.5 * (floor + world.top());
+  const PileSection section = cut_pile(meshes, result.section_height, lower, upper, 1e-4);
+  const auto in_room = [&](const Eigen::Vector2d& p) {
+    return room_at(room, xpbd::Vec3(p.x(), p.y(), result.section_height)) > 0.0;
+  };
+  const std::vector<char> region = region_around(section, in_room, mean);
+  result.packing_fraction = packing_fraction(section, region);
+  write_png(folder_ / "section.png", section_image(section, region));
+}
+
+void SectionObserver::end(const World& world, const Stepper&, SceneReport& report) {
+  const int c = room_collider(world);
+  RunInfoEntries& info = report.info;
+  if (c < 0) {
+    for (const char* key : {"grains_in_container", "section_height_m", "packing_fraction_in_room_at_section"})
+      info.push_back({key, "n/a"});
+    return;
+  }
+  const xpbd::Collider& room = world.model.colliders[c];
+  std::vector<int> inside;
+  for (int g = 0; g < world.released; ++g) {
+    const xpbd::Vec3 centre = world.centre(g);
+    if (fill_ ? room_at(room, centre) > 0.0 : centre.head<2>().norm() < world.bowl.rim_radius) inside.push_back(g);
+  }
+  SceneResult& r = report.result;
+  r.in_container = static_cast<int>(inside.size());
+  if (!inside.empty()) cut(world, room, inside, r);
+  info.push_back({"grains_in_container", cell(r.in_container)});
+  info.push_back({"section_height_m", cell(r.section_height)});
+  info.push_back({"packing_fraction_in_room_at_section", cell(r.packing_fraction)});
+}
+
+}  // namespace rice::experiments

@@ -1,0 +1,54 @@
+// stats.csv; see stats_observer.hpp.
+#include "experiments/scene/stats_observer.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "experiments/io/atomic_file.hpp"
+#include "xpbd/energy.hpp"
+
+namespace rice::experiments {
+namespace {
+
+long awake_grains(const World& world) {
+  return std::count_if(world.model.bodies.begin(), world.model.bodies.end(),
+                       [](const xpbd::Body& b) { return !b.asleep; });
+}
+
+}  // namespace
+
+StatsObserver::StatsObserver(const std::filesystem::path& folder)
+    : folder_(folder),
+      stats_({"frame", "time_s", "wall_s", "awake", "candidates", "contacts", "bonds", "bonds_broken",
+              "max_penetration_m", "kinetic_energy_j", "top_m", "broad_phase_s", "narrow_phase_s", "solve_s",
+              "sleeping_s"}) {}
+
+void StatsObserver::begin(const World& world) {
+  for (const xpbd::Collider& c : world.model.colliders) first_removal_ = std::min(first_removal_, c.removal_time);
+}
+
+void StatsObserver::observe(const World& world, const Stepper& stepper, int frame, double wall_seconds) {
+  const xpbd::ContactStatistics& contact = stepper.contacts();
+  const xpbd::SolverTimings& t = stepper.timings();
+  const double top = world.top();
+  if (stepper.time() <= first_removal_) top_before_removal_ = top;
+  stats_.add_row({cell(frame), cell(stepper.time()), cell(wall_seconds), cell(awake_grains(world)),
+                  cell(contact.candidates), cell(contact.contacts), cell(contact.bonds), cell(contact.bonds_broken),
+                  cell(contact.max_penetration), cell(xpbd::kinetic_energy(world.model)), cell(top),
+                  cell(t.broad_phase), cell(t.narrow_phase), cell(t.solve()), cell(t.sleeping)});
+}
+
+void StatsObserver::end(const World& world, const Stepper& stepper, SceneReport& report) {
+  write_file_atomically(folder_ / "stats.csv", stats_.text());
+  SceneResult& r = report.result;
+  r.awake = static_cast<int>(awake_grains(world));
+  r.penetration = xpbd::deepest_penetration(world.model, stepper.time());
+  const bool removed = std::isfinite(first_removal_);
+  r.top_before_removal = removed ? top_before_removal_ : std::numeric_limits<double>::quiet_NaN();
+  report.info.push_back({"awake_at_end", cell(r.awake)});
+  report.info.push_back({"top_centre_before_removal_m", removed ? cell(r.top_before_removal) : "n/a"});
+  report.info.push_back({"penetration_between_grains_at_end_m", cell(r.penetration.between_bodies)});
+  report.info.push_back({"penetration_into_container_at_end_m", cell(r.penetration.into_colliders)});
+}
+
+}  // namespace rice::experiments
