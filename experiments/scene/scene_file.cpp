@@ -240,7 +240,12 @@ void read_emitter(TomlSection section, Scene& scene, const std::vector<int>& mes
   } else {
     e.height = section.number("height_m");
     e.radius = section.number("radius_m");
-    if (e.kind == EmitterKind::kSpout) e.seconds = section.number("seconds");
+    if (e.kind == EmitterKind::kSpout) {
+      const toml::node* seconds = section.claim("seconds");  // 0 once meant a clump: say what it is now
+      if (seconds && seconds->value<double>() == 0.0)
+        section.fail(*seconds, "seconds", expected(scene_key("emitter", "seconds")) + " (all at once: kind = 'clump')");
+      e.seconds = section.number("seconds");
+    }
   }
   section.finish();
 }

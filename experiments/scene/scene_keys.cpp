@@ -181,15 +181,24 @@ std::string type_name(const SceneKey& key) {
   return "?";
 }
 
+/// The shortest text of `value` with a plain exponent: "1e9", "2e-4", "0.3".
+std::string readable_number(double value) {
+  std::string text = number_text(value);
+  const size_t e = text.find('e');
+  if (e == std::string::npos) return text;
+  size_t digits = e + 1;
+  if (text[digits] == '+') text.erase(digits, 1);
+  if (text[digits] == '-') ++digits;
+  while (text[digits] == '0' && digits + 1 < text.size()) text.erase(digits, 1);
+  return text;
+}
+
 /// A range's end as people write it: integers whole ("100000"; the largest seed, 2^63 - 1, is
-/// no double), numbers the shortest text with a plain exponent ("1e9", "0.0002").
+/// no double), numbers as readable_number writes them.
 std::string end_text(const SceneKey& key, double value) {
   if (key.type == KeyType::kInteger)
     return value >= kLargestSeed ? "2^63 - 1" : std::to_string(static_cast<long long>(value));
-  std::string text = number_text(value);
-  const size_t e = text.find("e+");
-  if (e != std::string::npos) text.erase(e + 1, text[e + 2] == '0' ? 2 : 1);
-  return text;
+  return readable_number(value);
 }
 
 std::string range_text(const SceneKey& key) {
@@ -201,11 +210,11 @@ std::string default_text(const SceneKey& key) {
   if (!key.default_note.empty()) return key.default_note;
   struct Shown {
     std::string operator()(std::monostate) const { return "none"; }
-    std::string operator()(double v) const { return number_text(v); }
+    std::string operator()(double v) const { return readable_number(v); }
     std::string operator()(bool v) const { return v ? "true" : "false"; }
     std::string operator()(const std::string& v) const { return "\"" + v + "\""; }
     std::string operator()(const std::array<double, 3>& v) const {
-      return "[" + number_text(v[0]) + ", " + number_text(v[1]) + ", " + number_text(v[2]) + "]";
+      return "[" + readable_number(v[0]) + ", " + readable_number(v[1]) + ", " + readable_number(v[2]) + "]";
     }
   };
   return std::visit(Shown{}, key.fallback);
@@ -226,17 +235,17 @@ std::string number_text(double value) {
 
 const std::vector<SceneSection>& scene_sections() {
   static const std::vector<SceneSection> sections{
-      {"scene", "[scene]", "what the scene is called and shows"},
-      {"grains", "[grains]", "what the grains are: cultivar, number, body and water content"},
-      {"solver", "[solver]", "how time advances"},
-      {"container", "[container]", "what holds the grains"},
-      {"emitter", "[emitter]", "how the grains enter the scene"},
-      {"effects", "[effects]", "what is simulated; what is off costs nothing"},
+      {"scene", "[scene]", "What the scene is called and shows"},
+      {"grains", "[grains]", "What the grains are: cultivar, number, body and water content"},
+      {"solver", "[solver]", "How time advances"},
+      {"container", "[container]", "What holds the grains"},
+      {"emitter", "[emitter]", "How the grains enter the scene"},
+      {"effects", "[effects]", "What is simulated; what is off costs nothing"},
       {"render", "[render]",
-       "the last frame rendered after the simulation with the CDRF at the grains' water content (rigid grains); no "
+       "The last frame rendered after the simulation with the CDRF at the grains' water content (rigid grains); no "
        "section, no render"},
-      {"colliders", "[[colliders]]", "any number of colliders beside the container, each with its pose or keyframes"},
-      {"keyframes", "keyframes = [{ ... }, ...] of a [[colliders]]", "one pose of a moving collider"},
+      {"colliders", "[[colliders]]", "Any number of colliders beside the container, each with its pose or keyframes"},
+      {"keyframes", "keyframes = [{ ... }, ...] of a [[colliders]]", "One pose of a moving collider"},
   };
   return sections;
 }
@@ -274,7 +283,7 @@ std::string expected(const SceneKey& key) {
     case KeyType::kFlag: return "true or false";
     case KeyType::kText: return "a text in quotes";
     case KeyType::kChoice: return "one of " + quoted_choices(key, "'");
-    case KeyType::kVector3: return "three numbers [x, y, z] within ±" + number_text(key.range.high);
+    case KeyType::kVector3: return "three numbers [x, y, z] within ±" + readable_number(key.range.high);
     case KeyType::kFile: return "a file name in quotes";
     case KeyType::kKeyframes: return "a list of { time_s = ..., position_m = [...] }";
   }
@@ -304,7 +313,7 @@ std::string scene_keys_markdown() {
       const bool ranged = key.type == KeyType::kNumber || key.type == KeyType::kInteger;
       const std::string range = ranged                           ? range_text(key)
                                 : key.type == KeyType::kChoice   ? quoted_choices(key, "`")
-                                : key.type == KeyType::kVector3 ? "each within ±" + number_text(key.range.high)
+                                : key.type == KeyType::kVector3 ? "each within ±" + readable_number(key.range.high)
                                                                  : "";
       out += "| `" + key.name + "` | " + type_name(key) + " | " + default_text(key) + " | " + range + " | " +
              key.meaning + " |\n";

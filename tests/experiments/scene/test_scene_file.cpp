@@ -10,12 +10,8 @@
 #include <iterator>
 #include <string>
 
-#include "experiments/figures/figure10.hpp"
-#include "experiments/figures/table1.hpp"
-#include "experiments/pile/pile_measures.hpp"
 #include "experiments/scene/scene_file.hpp"
 #include "experiments/scene/scene_run.hpp"
-#include "tests/xpbd/grain_fixtures.hpp"
 
 #ifndef RICE_SCENES_DIR
 #error "RICE_SCENES_DIR must name experiments/scenes (set by tests/CMakeLists.txt)"
@@ -144,6 +140,8 @@ TEST(SceneFile, MistakesNameTheFileTheLineAndTheKey) {
       {"[effects]\nstatic_friction = 0.3\n", "bad.toml:2: [effects] static_friction = 0.3: expected at least dynamic_friction"},
       {"[effects]\ncohesion = 1\n", "bad.toml:2: [effects] cohesion = 1: expected true or false"},
       {"[emitter]\nkind = \"stream\"\n", "bad.toml:2: [emitter] kind = \"stream\": expected one of 'spout'"},
+      {"[emitter]\nseconds = 0\n", "bad.toml:2: [emitter] seconds = 0: expected a number in (0, 10000] (all at once: kind = 'clump')"},
+      {"[emitter]\nkind = \"clump\"\nseconds = 1\n", "bad.toml:3: [emitter] has no key 'seconds'"},
       {"[grains]\ncount = = 3\n", "bad.toml:2: "},
   };
   for (const Case& c : cases) {
@@ -350,69 +348,6 @@ TEST(SceneFile, TheMouldScenesRunShortAndEveryGrainFindsRoom) {
     EXPECT_NE(text.find("grains_placed: 40\n"), std::string::npos) << text;
     EXPECT_NE(text.find("fill_rounds: 1\n"), std::string::npos) << text;
   }
-}
-
-TEST(PileMeasures, FootprintRadiusHoldsTheFractionOfCentresAboutTheirMean) {
-  // Ten centres on a circle of 2 cm about (1, 1), one at its middle, heights anything.
-  std::vector<xpbd::Vec3> centres{xpbd::Vec3(1.0, 1.0, 0.3)};
-  for (int k = 0; k < 10; ++k) {
-    const double t = 2.0 * M_PI * k / 10.0;
-    centres.emplace_back(1.0 + 0.02 * std::cos(t), 1.0 + 0.02 * std::sin(t), 0.01 * k);
-  }
-  EXPECT_NEAR(footprint_radius(centres, 0.9), 0.02, 1e-12);
-  EXPECT_NEAR(footprint_radius(centres, 1.0 / 11.0), 0.0, 1e-12);  // the middle one alone
-  EXPECT_EQ(footprint_radius({}), 0.0);
-}
-
-TEST(PileMeasures, ClustersAreTheGroupsOfGrainsWhoseSpheresTouch) {
-  // Three grain-sized bodies in a row 50 µm apart and a fourth far away: two groups at a gap
-  // of 0.1 mm, four at 10 µm.
-  xpbd::Model model;
-  for (int g = 0; g < 3; ++g)
-    xpbd::testing::add_grain(model, xpbd::BodyKind::kRigid, xpbd::Vec3(0.0, g * (xpbd::testing::kGrainWidth + 5e-5), 0.0));
-  xpbd::testing::add_grain(model, xpbd::BodyKind::kSoft, xpbd::Vec3(0.1, 0.0, 0.0));
-  EXPECT_EQ(count_clusters(model, 1e-4), 2);
-  EXPECT_EQ(count_clusters(model, 1e-5), 4);
-}
-
-TEST(Figure10, RunsTheDropSceneAtEachSoakTimeAndTabulatesThePiles) {
-  const std::filesystem::path out = std::filesystem::path(RICE_TEST_SCRATCH) / "figure10";
-  std::filesystem::remove_all(out);
-  Figure10Settings s;
-  s.scene = std::filesystem::path(RICE_SCENES_DIR) / "drop.toml";
-  s.soak_minutes = {15.0, 240.0};
-  s.overrides = {"grains.count=12", "grains.variants=2", "solver.frames=4", "render.width=32", "render.height=24",
-                 "render.samples_per_pixel=1"};
-  figure10_command(s, out);
-  std::ifstream table(out / "figure10.csv");
-  std::string line;
-  int rows = 0;
-  while (std::getline(table, line)) ++rows;
-  EXPECT_EQ(rows, 3);  // header and one row per soak time
-  EXPECT_TRUE(std::filesystem::exists(out / "soak_240min" / "scene.toml"));
-}
-
-TEST(Table1, RunsTheFourScenesAndSetsTheirTimesBesideThePapers) {
-  const std::filesystem::path out = std::filesystem::path(RICE_TEST_SCRATCH) / "table1";
-  std::filesystem::remove_all(out);
-  Table1Settings s;
-  s.scenes = RICE_SCENES_DIR;
-  s.overrides = {"grains.count=0"};
-  EXPECT_THROW(table1_command(s, out), SceneError);
-  EXPECT_FALSE(std::filesystem::exists(out));  // a bad scene: nothing run, nothing written
-  s.overrides = {"grains.count=12", "grains.variants=2", "solver.frames=3", "render.width=32", "render.height=24",
-                 "render.samples_per_pixel=1"};
-  table1_command(s, out);
-  std::ifstream table(out / "table1.csv");
-  std::string line;
-  std::vector<std::string> rows;
-  while (std::getline(table, line)) rows.push_back(line);
-  ASSERT_EQ(rows.size(), 5u);  // the header and shari, chawan, onigiri, bunny
-  EXPECT_TRUE(rows[1].starts_with("14,shari,12,270,3,"));
-  EXPECT_TRUE(rows[4].starts_with("17,bunny,12,3600,3,"));
-  for (const std::string& row : rows) EXPECT_EQ(std::count(row.begin(), row.end(), ','), 14) << row;
-  EXPECT_TRUE(std::filesystem::exists(out / "table1.md"));
-  EXPECT_TRUE(std::filesystem::exists(out / "onigiri" / "render" / "render.png"));
 }
 
 }  // namespace

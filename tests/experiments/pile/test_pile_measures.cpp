@@ -1,0 +1,38 @@
+// What a pile looks like from above (experiments/pile/pile_measures.hpp): the footprint radius
+// holds its fraction of the centres, and touching grains form groups.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "experiments/pile/pile_measures.hpp"
+#include "tests/xpbd/grain_fixtures.hpp"
+
+namespace rice::experiments {
+namespace {
+
+TEST(PileMeasures, FootprintRadiusHoldsTheFractionOfCentresAboutTheirMean) {
+  // Ten centres on a circle of 2 cm about (1, 1), one at its middle, heights anything.
+  std::vector<xpbd::Vec3> centres{xpbd::Vec3(1.0, 1.0, 0.3)};
+  for (int k = 0; k < 10; ++k) {
+    const double t = 2.0 * M_PI * k / 10.0;
+    centres.emplace_back(1.0 + 0.02 * std::cos(t), 1.0 + 0.02 * std::sin(t), 0.01 * k);
+  }
+  EXPECT_NEAR(footprint_radius(centres, 0.9), 0.02, 1e-12);
+  EXPECT_NEAR(footprint_radius(centres, 1.0 / 11.0), 0.0, 1e-12);  // the middle one alone
+  EXPECT_EQ(footprint_radius({}), 0.0);
+}
+
+TEST(PileMeasures, ClustersAreTheGroupsOfGrainsWhoseSpheresTouch) {
+  // Three grain-sized bodies in a row 50 µm apart and a fourth far away: two groups at a gap
+  // of 0.1 mm, four at 10 µm.
+  xpbd::Model model;
+  for (int g = 0; g < 3; ++g)
+    xpbd::testing::add_grain(model, xpbd::BodyKind::kRigid, xpbd::Vec3(0.0, g * (xpbd::testing::kGrainWidth + 5e-5), 0.0));
+  xpbd::testing::add_grain(model, xpbd::BodyKind::kSoft, xpbd::Vec3(0.1, 0.0, 0.0));
+  EXPECT_EQ(count_clusters(model, 1e-4), 2);
+  EXPECT_EQ(count_clusters(model, 1e-5), 4);
+}
+
+}  // namespace
+}  // namespace rice::experiments

@@ -1,0 +1,81 @@
+// The observers of a scene run (experiments/scene/observer.hpp): only those of the effects a
+// scene calls for are made; a run writes a stats row and a pose file per frame, render meshes
+// only when asked, and on a plate no section; every observer's measures reach run_info.txt.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "experiments/scene/render_mesh_observer.hpp"
+#include "experiments/scene/scene_parts.hpp"
+#include "experiments/scene/scene_run.hpp"
+
+namespace rice::experiments {
+namespace {
+
+namespace fs = std::filesystem;
+
+int files_with(const fs::path& folder, const std::string& extension) {
+  int n = 0;
+  for (const auto& entry : fs::directory_iterator(folder)) n += entry.path().extension() == extension;
+  return n;
+}
+
+int lines_of(const fs::path& path) {
+  std::ifstream in(path);
+  return static_cast<int>(std::count(std::istreambuf_iterator<char>(in), {}, '\n'));
+}
+
+std::string text_of(const fs::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+int render_mesh_observers(const Scene& scene) {
+  int n = 0;
+  for (const auto& observer : make_observers(scene, fs::path(RICE_TEST_SCRATCH) / "unused"))
+    n += dynamic_cast<const RenderMeshObserver*>(observer.get()) != nullptr;
+  return n;
+}
+
+TEST(Observers, OnlyTheEffectsASceneCallsForAreObserved) {
+  Scene scene;
+  EXPECT_EQ(render_mesh_observers(scene), 0);
+  scene.effects.render_meshes = true;
+  EXPECT_EQ(render_mesh_observers(scene), 1);
+}
+
+TEST(Observers, ARunWritesAStatsRowAndAPoseFilePerFrameAndItsMeasures) {
+  Scene scene;
+  scene.container.kind = Container::kPlate;
+  scene.emitter.kind = EmitterKind::kClump;
+  scene.grains.count = 6;
+  scene.grains.variants = 1;
+  scene.solver.frames = 4;
+  const fs::path plain = fs::path(RICE_TEST_SCRATCH) / "observers-plain";
+  fs::remove_all(plain);
+  const SceneResult result = run_scene(scene, plain);
+  EXPECT_EQ(lines_of(plain / "stats.csv"), 1 + 4);
+  EXPECT_EQ(files_with(plain / "frames", ".csv"), 4);
+  EXPECT_EQ(files_with(plain / "frames", ".ply"), 0);
+  EXPECT_EQ(lines_of(plain / "final_centres.csv"), 1 + 6);
+  EXPECT_EQ(lines_of(plain / "grains.csv"), 1 + 6);
+  EXPECT_FALSE(fs::exists(plain / "section.png"));
+  EXPECT_FALSE(fs::exists(plain / "chawan.obj"));
+  EXPECT_EQ(result.in_container, -1);
+  EXPECT_GT(result.simulation_seconds, 0.0);
+  const std::string info = text_of(plain / "run_info.txt");
+  for (const char* line : {"emitter: clump\n", "grains_in_container: n/a\n", "substeps: 80\n", "clusters: ",
+                           "awake_at_end: ", "wall_s: "})
+    EXPECT_NE(info.find(line), std::string::npos) << line;
+
+  scene.effects.render_meshes = true;
+  const fs::path meshes = fs::path(RICE_TEST_SCRATCH) / "observers-meshes";
+  fs::remove_all(meshes);
+  run_scene(scene, meshes);
+  EXPECT_EQ(files_with(meshes / "frames", ".ply"), 4);
+}
+
+}  // namespace
+}  // namespace rice::experiments

@@ -1,0 +1,111 @@
+// The world builder (experiments/scene/world_builder.hpp), the world's grain operations and the
+// stepper: every grain is built parked and asleep beside the colliders in their order; the
+// effects a scene leaves off are off in the model; a rigid grain's render mesh rides its pose;
+// the stepper steps a frame with the scene's substeps and method.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "experiments/scene/scene_file.hpp"
+#include "experiments/scene/spout_emitter.hpp"
+#include "experiments/scene/stepper.hpp"
+#include "experiments/scene/world_builder.hpp"
+#include "grains/embedding.hpp"
+
+namespace rice::experiments {
+namespace {
+
+using xpbd::Vec3;
+
+TEST(WorldBuilder, BuildsEveryGrainParkedAndAsleepBesideTheCollidersInOrder) {
+  // The shari: a plate, no analytic collider, two meshes (the mould and the lid).
+  const Scene scene = read_scene_file(std::filesystem::path(RICE_SCENES_DIR) / "shari.toml",
+                                      {"grains.count=6", "grains.variants=2"});
+  const auto emitter = std::make_unique<SpoutEmitter>(scene.emitter, scene.container);
+  World world = build_world(scene, *emitter);
+  ASSERT_EQ(world.model.colliders.size(), 3u);
+  EXPECT_EQ(world.model.colliders[0].shape, xpbd::ColliderShape::kHalfSpace);
+  EXPECT_EQ(world.first_mesh_collider, 1);
+  EXPECT_EQ(world.model.colliders[1].shape, xpbd::ColliderShape::kDistanceGrid);
+  EXPECT_EQ(world.model.colliders[1].removal_time, 4.5);  // the mould
+  EXPECT_EQ(world.count(), 6);
+  EXPECT_EQ(world.released, 0);
+  EXPECT_GT(world.grain_length, 5e-3);
+  for (int g = 0; g < 6; ++g) {
+    EXPECT_TRUE(world.model.bodies[g].asleep);
+    EXPECT_NEAR((world.centre(g) - world.parking(g) - world.initial_centre[g]).norm(), 0.0, 1e-12);
+    EXPECT_GT(world.parking(g).x(), 1.0);  // metres from everything
+    EXPECT_GT(world.model.bodies[g].bond_strength, 0.0);
+  }
+}
+
+TEST(WorldBuilder, EffectsTheSceneLeavesOffAreOffInTheModel) {
+  Scene scene;
+  scene.container.kind = Container::kPlate;
+  scene.grains.count = 2;
+  scene.grains.variants = 1;
+  scene.grains.body = xpbd::BodyKind::kSoft;
+  SpoutEmitter on_emitter(scene.emitter, scene.container);
+  const World on = build_world(scene, on_emitter);
+  EXPECT_GT(on.rayleigh_time, 0.0);
+  EXPECT_TRUE(on.model.contact.cohesion);
+  EXPECT_TRUE(on.model.sleep.enabled);
+  scene.effects = {.static_friction = 0.0, .dynamic_friction = 0.0, .cohesion = false, .damping = false, .sleeping = false};
+  SpoutEmitter off_emitter(scene.emitter, scene.container);
+  const World off = build_world(scene, off_emitter);
+  EXPECT_EQ(off.rayleigh_time, 0.0);
+  EXPECT_FALSE(off.model.contact.cohesion);
+  EXPECT_FALSE(off.model.sleep.enabled);
+  EXPECT_EQ(off.model.contact.static_friction, 0.0);
+  EXPECT_EQ(off.model.colliders[0].static_friction, 0.0);
+  EXPECT_EQ(off.model.bodies[0].bond_strength, 0.0);
+}
+
+TEST(World, ARigidGrainsRenderMeshRidesItsPose) {
+  Scene scene;
+  scene.container.kind = Container::kPlate;
+  scene.grains.count = 2;
+  scene.grains.variants = 1;
+  SpoutEmitter emitter(scene.emitter, scene.container);
+  World world = build_world(scene, emitter);
+  const grains::Grain& grain = world.variants[0].grain;
+  const grains::Vertices parked = world.rest_vertices[1].rowwise() + world.parking(1).transpose();
+  const grains::Vertices expected = grains::apply_embedding(grain.embedding, parked, grain.simulation.T);
+  EXPECT_LT((world.render_mesh(1).V - expected).cwiseAbs().maxCoeff(), 1e-12);
+  const Vec3 offset(0.0, 0.0, 0.05);
+  world.release(1, offset);  // from its parking place to its build point, 5 cm up
+  EXPECT_FALSE(world.model.bodies[1].asleep);
+  const grains::Vertices moved = (expected.rowwise() + (offset - world.parking(1)).transpose()).eval();
+  EXPECT_LT((world.render_mesh(1).V - moved).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+TEST(Stepper, StepsAFrameWithTheScenesSubstepsAndMethod) {
+  Scene scene;
+  EXPECT_EQ(solver_settings(scene).substeps, 80);  // rigid
+  scene.grains.body = xpbd::BodyKind::kSoft;
+  EXPECT_EQ(solver_settings(scene).substeps, 480);
+  scene.solver = {.fps = 60.0, .frames = 2, .substeps = 7, .iterations = 3, .vertex_block_descent = true};
+  const xpbd::SolverSettings s = solver_settings(scene);
+  EXPECT_EQ(s.substeps, 7);
+  EXPECT_EQ(s.iterations, 3);
+  EXPECT_EQ(s.time_step, 1.0 / 60.0);
+  EXPECT_EQ(s.method, xpbd::Method::kVbd);
+
+  scene.container.kind = Container::kPlate;
+  scene.grains.count = 1;
+  scene.grains.variants = 1;
+  SpoutEmitter emitter(scene.emitter, scene.container);
+  World world = build_world(scene, emitter);
+  emitter.emit(world, 0.0);
+  Stepper stepper(world.model, scene);
+  const double height = world.centre(0).z();
+  stepper.step();
+  EXPECT_DOUBLE_EQ(stepper.time(), 1.0 / 60.0);
+  EXPECT_LT(world.centre(0).z(), height);  // it falls
+  RunInfoEntries info;
+  stepper.report(info);
+  EXPECT_EQ(info[2], (std::pair<std::string, std::string>{"method", "vbd"}));
+}
+
+}  // namespace
+}  // namespace rice::experiments

@@ -1,0 +1,48 @@
+# Dependencies point one way (DESIGN.md): between the modules, experiments -> {grains, xpbd,
+# fem_reference, shading} and fem_reference -> xpbd; inside experiments/, cli -> studies,
+# figures -> scene -> pile, render -> io. A file may include its own folder's headers and
+# those of folders below it, never one beside or above it. Fails naming each include that
+# points the wrong way. Called by CTest with -DROOT=<the repository>.
+cmake_minimum_required(VERSION 3.25)
+set(modules xpbd fem_reference grains shading experiments)
+set(module_xpbd xpbd)
+set(module_fem_reference fem_reference xpbd)
+set(module_grains grains)
+set(module_shading shading)
+set(module_experiments experiments xpbd fem_reference grains shading)
+# experiments/ folders by level: a file includes only its own folder and lower levels.
+set(level_io 0)
+set(level_pile 1)
+set(level_render 1)
+set(level_scene 2)
+set(level_studies 3)
+set(level_figures 3)
+set(level_cli 4)
+
+set(wrong "")
+foreach(module ${modules})
+  file(GLOB_RECURSE sources RELATIVE "${ROOT}" "${ROOT}/${module}/*.hpp" "${ROOT}/${module}/*.cpp")
+  foreach(source ${sources})
+    file(STRINGS "${ROOT}/${source}" includes REGEX "^#include \"(xpbd|fem_reference|grains|shading|experiments)/")
+    string(REGEX MATCH "^experiments/([a-z]+)/" inside "${source}")
+    set(own_folder "${CMAKE_MATCH_1}")
+    foreach(line ${includes})
+      string(REGEX MATCH "^#include \"([a-z_]+)/([a-z_]+)/?" _ "${line}")
+      set(target_module "${CMAKE_MATCH_1}")
+      set(target_folder "${CMAKE_MATCH_2}")
+      if(NOT target_module IN_LIST module_${module})
+        string(APPEND wrong "\n  ${source}: ${line}")
+      elseif(module STREQUAL "experiments" AND target_module STREQUAL "experiments" AND DEFINED level_${target_folder})
+        if(own_folder STREQUAL "")
+          continue()  # rice_main.cpp, above every folder
+        endif()
+        if(NOT own_folder STREQUAL target_folder AND NOT level_${target_folder} LESS level_${own_folder})
+          string(APPEND wrong "\n  ${source}: ${line}")
+        endif()
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+if(wrong)
+  message(FATAL_ERROR "includes that point the wrong way:${wrong}")
+endif()
