@@ -20,27 +20,9 @@ std::filesystem::path table_path(const WaterAbsorptionFigureSettings& settings) 
   return settings.table.empty() ? grains::default_absorption_table() : settings.table;
 }
 
-}  // namespace
-
-void validate(const WaterAbsorptionFigureSettings& settings) {
-  const std::filesystem::path table = table_path(settings);
-  try {
-    grains::WaterContentModel model(grains::read_absorption_table(table));
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(table.string() + ": " + e.what());
-  }
-}
-
-void water_absorption_figure_command(const WaterAbsorptionFigureSettings& settings,
-                                     const std::filesystem::path& folder) {
-  validate(settings);
-  const auto start = std::chrono::steady_clock::now();
-  const std::filesystem::path table = table_path(settings);
-  const std::vector<grains::AbsorptionSample> samples = grains::read_absorption_table(table);
-  const grains::DampingReference reference;
-  const grains::WaterContentModel model(samples, reference);
-  make_output_folder(folder);
-
+/// The table's samples, with log10 t and log10(1/β) from eq. 4's reading of them.
+CsvTable data_table(const std::vector<grains::AbsorptionSample>& samples, const grains::WaterContentModel& model,
+                    const grains::DampingReference& reference) {
   CsvTable data({"temperature_c", "soak_minutes", "absorption_percent", "log10_seconds", "log10_inverse_beta"});
   for (const grains::AbsorptionSample& s : samples)
     data.add_row({cell(s.temperature_c), cell(s.soak_minutes), cell(s.absorption_percent),
@@ -48,10 +30,12 @@ void water_absorption_figure_command(const WaterAbsorptionFigureSettings& settin
                   cell(std::log10(s.absorption_percent /
                                   (reference.beta * model.absorption_percent(reference.soak_minutes,
                                                                              reference.temperature_c))))});
-  write_file_atomically(folder / "absorption_data.csv", data.text());
+  return data;
+}
 
-  // Fitted curves: each temperature's own Peleg fit, and the temperature-interpolated model,
-  // from 1 to 180 minutes.
+/// Fitted curves: each temperature's own Peleg fit, and the temperature-interpolated model,
+/// from 1 to 180 minutes.
+CsvTable curve_table(const grains::WaterContentModel& model) {
   CsvTable curves({"temperature_c", "soak_minutes", "peleg_fit_percent", "model_percent", "beta_s",
                    "eq4_beta_s", "sigma0_rad_m"});
   for (size_t i = 0; i < model.peleg_fits().size(); ++i) {
@@ -64,15 +48,17 @@ void water_absorption_figure_command(const WaterAbsorptionFigureSettings& settin
                       cell(grains::WaterContentModel::scattering_sigma0(w))});
     }
   }
-  write_file_atomically(folder / "absorption_curves.csv", curves.text());
+  return curves;
+}
 
+/// The Peleg and eq. 4 fits per temperature (the latter printed too).
+void write_fit_tables(const std::filesystem::path& folder, const grains::WaterContentModel& model) {
   CsvTable peleg({"temperature_c", "k1_min_per_percent", "k2_per_percent", "saturation_percent", "rms_residual_percent",
                   "samples"});
   for (const grains::PelegFit& fit : model.peleg_fits())
     peleg.add_row({cell(fit.temperature_c), cell(fit.k1), cell(fit.k2), cell(1.0 / fit.k2), cell(fit.rms_residual),
                    cell(fit.samples)});
   write_file_atomically(folder / "peleg_fits.csv", peleg.text());
-
   CsvTable damping({"temperature_c", "a", "b", "rms_residual_log10", "r_squared", "samples"});
   for (const grains::DampingFit& fit : model.damping_fits()) {
     damping.add_row({cell(fit.temperature_c), cell(fit.a), cell(fit.b), cell(fit.rms_residual), cell(fit.r_squared),
@@ -81,7 +67,9 @@ void water_absorption_figure_command(const WaterAbsorptionFigureSettings& settin
               << ", rms residual = " << fit.rms_residual << " (log10), R^2 = " << fit.r_squared << '\n';
   }
   write_file_atomically(folder / "damping_fits.csv", damping.text());
+}
 
+void plot_figure11(const std::filesystem::path& folder, const grains::WaterContentModel& model) {
   std::string temperatures;
   for (const grains::PelegFit& fit : model.peleg_fits()) {
     if (!temperatures.empty()) temperatures += ' ';
@@ -106,6 +94,32 @@ plot for [i=1:words(temps)] 'absorption_data.csv' using ($1 == T(i) ? $4 : 1/0):
      for [i=1:words(temps)] 'absorption_curves.csv' using ($1 == T(i) ? log10(60*$2) : 1/0):(-log10($6)) with lines lc i notitle
 unset multiplot
 )");
+}
+
+}  // namespace
+
+void validate(const WaterAbsorptionFigureSettings& settings) {
+  const std::filesystem::path table = table_path(settings);
+  try {
+    grains::WaterContentModel model(grains::read_absorption_table(table));
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(table.string() + ": " + e.what());
+  }
+}
+
+void water_absorption_figure_command(const WaterAbsorptionFigureSettings& settings,
+                                     const std::filesystem::path& folder) {
+  validate(settings);
+  const auto start = std::chrono::steady_clock::now();
+  const std::filesystem::path table = table_path(settings);
+  const std::vector<grains::AbsorptionSample> samples = grains::read_absorption_table(table);
+  const grains::DampingReference reference;
+  const grains::WaterContentModel model(samples, reference);
+  make_output_folder(folder);
+  write_file_atomically(folder / "absorption_data.csv", data_table(samples, model, reference).text());
+  write_file_atomically(folder / "absorption_curves.csv", curve_table(model).text());
+  write_fit_tables(folder, model);
+  plot_figure11(folder, model);
   stop_point();  // a Ctrl-C while gnuplot ran (it does not get the signal) stops here
   write_file_atomically(folder / "run_info.txt",
                         run_info({{"figure", "11"},

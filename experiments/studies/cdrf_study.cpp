@@ -137,83 +137,70 @@ GrainCheck check_on_grain(const WaterContentFit& fit, const shading::MeshVertice
   return check;
 }
 
-void cdrf_study_command(const CdrfStudySettings& settings, const std::filesystem::path& folder) {
-  validate(settings);
-  const auto start = std::chrono::steady_clock::now();
-  const grains::WaterContentModel model(grains::read_absorption_table(grains::default_absorption_table()));
-  make_output_folder(folder);
+namespace {
 
-  CsvTable profiles({"absorption_percent", "radius_mm", "theta_rad", "reference", "standard_error", "cdrf"});
-  CsvTable grain_profiles({"absorption_percent", "theta_rad", "curvature_per_mm", "reference", "cdrf"});
-  std::vector<WaterContentFit> results;
-  std::vector<GrainCheck> grain_checks;
-  grains::GrainRecipe recipe;
-  recipe.cultivar = grains::cultivar_by_name("japonica");
-  const grains::Grain grain = grains::make_grain(recipe, settings.seed, 1.0);
-  const int runs = static_cast<int>(settings.soak_minutes.size() * settings.radii_mm.size());
-  Progress progress("study cdrf: spheres", runs);
-  int done = 0;
-  for (const double minutes : settings.soak_minutes) {
-    WaterContentFit r = fit_water_content(model.absorption_percent(minutes, settings.temperature_c), settings,
-                                          [&] { progress.update(++done); });
-    r.soak_minutes = minutes;
-    if (settings.grain_photons > 0) {
-      grain_checks.push_back(check_on_grain(r, grain.render.V, grain.render.F, settings.grain_photons, settings.seed));
-      const GrainCheck& g = grain_checks.back();
-      for (size_t k = 0; k < g.samples.size(); ++k)
-        grain_profiles.add_row({cell(r.absorption_percent), cell(g.samples[k].theta), cell(1e-3 * g.samples[k].curvature),
-                                cell(g.samples[k].exitance), cell(g.cdrf[k])});
+/// A fit's profile on each sphere: the random walk and the CDRF, per θ bin.
+void add_sphere_profiles(CsvTable& profiles, const WaterContentFit& r, const CdrfStudySettings& settings) {
+  for (size_t i = 0; i < r.spheres.size(); ++i) {
+    const auto& sphere = r.spheres[i];
+    for (size_t k = 0; k < sphere.theta.size(); ++k) {
+      const double kappa = 1e3 / settings.radii_mm[i];
+      profiles.add_row({cell(r.absorption_percent), cell(settings.radii_mm[i]), cell(sphere.theta[k]),
+                        cell(sphere.exitance[k]), cell(sphere.standard_error[k]),
+                        cell(r.fit.amplitude * shading::cdrf_integral(std::cos(sphere.theta[k]), r.fit.sigma0 * kappa))});
     }
-    for (size_t i = 0; i < r.spheres.size(); ++i) {
-      const auto& sphere = r.spheres[i];
-      for (size_t k = 0; k < sphere.theta.size(); ++k) {
-        const double kappa = 1e3 / settings.radii_mm[i];
-        profiles.add_row({cell(r.absorption_percent), cell(settings.radii_mm[i]), cell(sphere.theta[k]),
-                          cell(sphere.exitance[k]), cell(sphere.standard_error[k]),
-                          cell(r.fit.amplitude * shading::cdrf_integral(std::cos(sphere.theta[k]), r.fit.sigma0 * kappa))});
-      }
-    }
-    results.push_back(r);
   }
-  progress.finish();
+}
 
-  // ln σ0 = s0 + s1 W across the water contents.
-  std::vector<double> w, log_sigma0;
+void add_grain_profiles(CsvTable& grain_profiles, const WaterContentFit& r, const GrainCheck& g) {
+  for (size_t k = 0; k < g.samples.size(); ++k)
+    grain_profiles.add_row({cell(r.absorption_percent), cell(g.samples[k].theta), cell(1e-3 * g.samples[k].curvature),
+                            cell(g.samples[k].exitance), cell(g.cdrf[k])});
+}
+
+/// The laws across the water contents: ln σ0 = s0 + s1 W, and the albedo A = a0 + a1 W.
+struct CdrfLaws {
+  double s0 = 0, s1 = 0, rms_log = 0;
+  double a0 = 0, a1 = 0, albedo_rms = 0;
+};
+
+CdrfLaws fit_laws(const std::vector<WaterContentFit>& results) {
+  std::vector<double> w, log_sigma0, amplitude;
   for (const auto& r : results) {
     w.push_back(r.absorption_percent);
     log_sigma0.push_back(std::log(r.fit.sigma0));
+    amplitude.push_back(r.fit.amplitude);
   }
-  double s0 = 0, s1 = 0, c00 = 0, c01 = 0, c11 = 0, sum_sq = 0;
-  gsl_fit_linear(w.data(), 1, log_sigma0.data(), 1, w.size(), &s0, &s1, &c00, &c01, &c11, &sum_sq);
-  const double law_rms = std::sqrt(sum_sq / w.size());
-  // The albedo A, linear in W.
-  std::vector<double> amplitude;
-  for (const auto& r : results) amplitude.push_back(r.fit.amplitude);
-  double a0 = 0, a1 = 0, albedo_sum_sq = 0;
-  gsl_fit_linear(w.data(), 1, amplitude.data(), 1, w.size(), &a0, &a1, &c00, &c01, &c11, &albedo_sum_sq);
+  CdrfLaws law;
+  double c00 = 0, c01 = 0, c11 = 0, sum_sq = 0, albedo_sum_sq = 0;
+  gsl_fit_linear(w.data(), 1, log_sigma0.data(), 1, w.size(), &law.s0, &law.s1, &c00, &c01, &c11, &sum_sq);
+  law.rms_log = std::sqrt(sum_sq / w.size());
+  gsl_fit_linear(w.data(), 1, amplitude.data(), 1, w.size(), &law.a0, &law.a1, &c00, &c01, &c11, &albedo_sum_sq);
+  law.albedo_rms = std::sqrt(albedo_sum_sq / w.size());
+  return law;
+}
 
+/// cdrf_fit.csv's rows: per water content, the fit, the law, the error and the times.
+CsvTable fit_table(const std::vector<WaterContentFit>& results, const std::vector<GrainCheck>& grain_checks,
+                   const CdrfLaws& law) {
   CsvTable fits({"soak_minutes", "absorption_percent", "reduced_scattering_per_mm", "refractive_index", "sigma0_mm",
                  "law_sigma0_mm", "amplitude", "rms", "relative_rms", "max_abs_error", "reference_s", "cdrf_ns",
                  "grain_rms", "grain_relative_rms", "grain_bake_s"});
-  double grain_worst = 0.0;
   for (size_t i = 0; i < results.size(); ++i) {
     const auto& r = results[i];
     const GrainCheck g = i < grain_checks.size() ? grain_checks[i] : GrainCheck{};
-    if (g.mean_exitance > 0.0) grain_worst = std::max(grain_worst, g.rms / g.mean_exitance);
     fits.add_row({cell(r.soak_minutes), cell(r.absorption_percent), cell(1e-3 * r.optics.reduced_scattering),
                   cell(r.optics.refractive_index), cell(1e3 * r.fit.sigma0),
-                  cell(1e3 * std::exp(s0 + s1 * r.absorption_percent)), cell(r.fit.amplitude), cell(r.fit.rms),
+                  cell(1e3 * std::exp(law.s0 + law.s1 * r.absorption_percent)), cell(r.fit.amplitude), cell(r.fit.rms),
                   cell(r.fit.rms / r.mean_exitance), cell(r.max_error), cell(r.reference_seconds),
                   cell(cdrf_nanoseconds(r.samples, r.fit.sigma0)), cell(g.rms),
                   cell(g.mean_exitance > 0.0 ? g.rms / g.mean_exitance : 0.0), cell(g.bake_seconds)});
   }
-  write_file_atomically(folder / "cdrf_fit.csv", fits.text());
-  write_file_atomically(folder / "cdrf_profiles.csv", profiles.text());
-  if (settings.grain_photons > 0) write_file_atomically(folder / "grain_profiles.csv", grain_profiles.text());
+  return fits;
+}
 
-  double worst_relative = 0.0;
-  for (const auto& r : results) worst_relative = std::max(worst_relative, r.fit.rms / r.mean_exitance);
-  const auto& middle = results[results.size() / 2];
+void plot_sphere_profiles(const std::filesystem::path& folder, const CdrfStudySettings& settings,
+                          const WaterContentFit& middle, double worst_relative) {
   std::string radii;
   for (const double x : settings.radii_mm) radii += cell(x) + " ";
   render_plot(folder, "cdrf_profiles", R"(set terminal pngcairo size 900,600
@@ -231,21 +218,25 @@ plot for [i=1:words(R)] 'cdrf_profiles.csv' using ($1 == W && $2 == word(R,i) ? 
      for [i=1:words(R)] '' using ($1 == W && $2 == word(R,i) ? $3 : 1/0):6 with lines lw 2 lc i \
        title 'CDRF, r = '.word(R,i).' mm'
 )");
-  if (settings.grain_photons > 0) {
-    render_plot(folder, "grain_profiles", R"(set terminal pngcairo size 900,600
+}
+
+void plot_grain_profiles(const std::filesystem::path& folder, const WaterContentFit& middle, double grain_worst) {
+  render_plot(folder, "grain_profiles", R"(set terminal pngcairo size 900,600
 set output 'grain_profiles.png'
 set datafile separator ','
 set xlabel 'angle between normal and light, θ [rad]'
 set ylabel 'exitance / irradiance'
 set title 'Sphere-fitted CDRF on a grain: )" + fixed(100 * grain_worst, 0) +
-                                         R"(% RMS off, a thin grain lets light through (W = )" +
-                                         fixed(middle.absorption_percent, 1) + R"( %)'
+                                      R"(% RMS off, a thin grain lets light through (W = )" +
+                                      fixed(middle.absorption_percent, 1) + R"( %)'
 set key right top
 W = )" + cell(middle.absorption_percent) + R"(
 plot 'grain_profiles.csv' using ($1 == W ? $2 : 1/0):4:3 with points pt 7 palette title 'random walk on the grain (colour: κ [1/mm])', \
      '' using ($1 == W ? $2 : 1/0):5:3 with points pt 6 ps 1.5 palette title 'CDRF at the same θ and κ'
 )");
-  }
+}
+
+void plot_sigma0_law(const std::filesystem::path& folder, const CdrfLaws& law) {
   render_plot(folder, "sigma0_law", R"(set terminal pngcairo size 900,600
 set output 'sigma0_law.png'
 set datafile separator ','
@@ -253,29 +244,73 @@ set logscale y
 set format y '10^{%L}'
 set xlabel 'water absorption W [%]'
 set ylabel 'σ0 [mm] (log)'
-set title 'σ0 = exp()" + fixed(s0, 3) + " + " + fixed(s1, 4) + R"( W) m: wetter grains scatter light further'
+set title 'σ0 = exp()" + fixed(law.s0, 3) + " + " + fixed(law.s1, 4) + R"( W) m: wetter grains scatter light further'
 set key left top
 plot 'cdrf_fit.csv' using 2:5 with points pt 7 ps 1.5 title 'fitted to the random walk', \
      '' using 2:6 with lines lw 2 title 'ln σ0 linear in W'
 )");
+}
+
+}  // namespace
+
+void cdrf_study_command(const CdrfStudySettings& settings, const std::filesystem::path& folder) {
+  validate(settings);
+  const auto start = std::chrono::steady_clock::now();
+  const grains::WaterContentModel model(grains::read_absorption_table(grains::default_absorption_table()));
+  make_output_folder(folder);
+
+  CsvTable profiles({"absorption_percent", "radius_mm", "theta_rad", "reference", "standard_error", "cdrf"});
+  CsvTable grain_profiles({"absorption_percent", "theta_rad", "curvature_per_mm", "reference", "cdrf"});
+  std::vector<WaterContentFit> results;
+  std::vector<GrainCheck> grain_checks;
+  grains::GrainRecipe recipe;
+  recipe.cultivar = grains::cultivar_by_name("japonica");
+  const grains::Grain grain = grains::make_grain(recipe, settings.seed, 1.0);
+  Progress progress("study cdrf: spheres", static_cast<int>(settings.soak_minutes.size() * settings.radii_mm.size()));
+  int done = 0;
+  for (const double minutes : settings.soak_minutes) {
+    WaterContentFit r = fit_water_content(model.absorption_percent(minutes, settings.temperature_c), settings,
+                                          [&] { progress.update(++done); });
+    r.soak_minutes = minutes;
+    if (settings.grain_photons > 0) {
+      grain_checks.push_back(check_on_grain(r, grain.render.V, grain.render.F, settings.grain_photons, settings.seed));
+      add_grain_profiles(grain_profiles, r, grain_checks.back());
+    }
+    add_sphere_profiles(profiles, r, settings);
+    results.push_back(r);
+  }
+  progress.finish();
+
+  const CdrfLaws law = fit_laws(results);
+  double worst_relative = 0.0, grain_worst = 0.0;
+  for (const auto& r : results) worst_relative = std::max(worst_relative, r.fit.rms / r.mean_exitance);
+  for (const GrainCheck& g : grain_checks)
+    if (g.mean_exitance > 0.0) grain_worst = std::max(grain_worst, g.rms / g.mean_exitance);
+  write_file_atomically(folder / "cdrf_fit.csv", fit_table(results, grain_checks, law).text());
+  write_file_atomically(folder / "cdrf_profiles.csv", profiles.text());
+  if (settings.grain_photons > 0) write_file_atomically(folder / "grain_profiles.csv", grain_profiles.text());
+  const WaterContentFit& middle = results[results.size() / 2];
+  plot_sphere_profiles(folder, settings, middle, worst_relative);
+  if (settings.grain_photons > 0) plot_grain_profiles(folder, middle, grain_worst);
+  plot_sigma0_law(folder, law);
   stop_point();
   write_file_atomically(folder / "run_info.txt",
                         run_info({{"study", "cdrf"},
                                   {"temperature_c", cell(settings.temperature_c)},
                                   {"photons_per_sphere", cell(static_cast<long>(settings.photons))},
                                   {"seed", cell(static_cast<long>(settings.seed))},
-                                  {"law_s0", cell(s0)},
-                                  {"law_s1_per_percent", cell(s1)},
-                                  {"law_rms_log", cell(law_rms)},
-                                  {"albedo_a0", cell(a0)},
-                                  {"albedo_a1_per_percent", cell(a1)},
-                                  {"albedo_rms", cell(std::sqrt(albedo_sum_sq / w.size()))},
+                                  {"law_s0", cell(law.s0)},
+                                  {"law_s1_per_percent", cell(law.s1)},
+                                  {"law_rms_log", cell(law.rms_log)},
+                                  {"albedo_a0", cell(law.a0)},
+                                  {"albedo_a1_per_percent", cell(law.a1)},
+                                  {"albedo_rms", cell(law.albedo_rms)},
                                   {"worst_relative_rms", cell(worst_relative)},
                                   {"grain_worst_relative_rms", cell(grain_worst)},
                                   {"wall_s", cell(seconds_since(start))}}));
   std::printf("study cdrf: ln sigma0[m] = %.4f + %.5f W (RMS %.3f in ln), albedo = %.4f %+.5f W; worst relative "
               "RMS of the fit %.1f%% on spheres, %.1f%% on the grain\n",
-              s0, s1, law_rms, a0, a1, 100 * worst_relative, 100 * grain_worst);
+              law.s0, law.s1, law.rms_log, law.a0, law.a1, 100 * worst_relative, 100 * grain_worst);
 }
 
 }  // namespace rice::experiments

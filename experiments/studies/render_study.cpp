@@ -68,6 +68,112 @@ void build_plate(Plate& plate, const RenderStudySettings& settings) {
   plate.camera.position = centre + reach * Eigen::Vector3d(0.0, -std::cos(0.7), std::sin(0.7));
 }
 
+/// Renders of the plate at one image size and seed, each with its materials, sampler and
+/// samples; counts them on the study's progress line.
+struct PlateRuns {
+  Plate& plate;  // the bake writes its grains' light into it
+  const shading::CdrfTable& cdrf;
+  const RenderStudySettings& settings;
+  Progress& progress;
+  int done = 0;
+
+  shading::Image operator()(const std::vector<shading::Material>& m, shading::SamplerKind sampler, int spp,
+                            double& seconds) {
+    shading::RenderStats stats;
+    const shading::RenderSettings render{.width = settings.width, .height = settings.height, .samples_per_pixel = spp,
+                                         .sampler = sampler, .seed = settings.seed};
+    shading::Image image = shading::render(plate.scene, m, plate.lights, plate.camera, cdrf, render, &stats, {},
+                                           stop_requested);
+    stop_point();
+    seconds = stats.seconds;
+    return image;
+  }
+  void tick() { progress.update(++done); }
+};
+
+/// Each sampler at each sample count against the reference image: a row each; the RMSEs per
+/// sampler, in the order of `samplers`.
+std::vector<std::vector<double>> sweep_samplers(
+    PlateRuns& run, const std::vector<shading::Material>& materials, const shading::Image& reference, double mean,
+    const std::vector<std::pair<const char*, shading::SamplerKind>>& samplers, CsvTable& table) {
+  std::vector<std::vector<double>> errors(samplers.size());
+  double seconds = 0.0;
+  for (size_t k = 0; k < samplers.size(); ++k) {
+    for (const int spp : run.settings.samples) {
+      const shading::Image image = run(materials, samplers[k].second, spp, seconds);
+      const double rmse = shading::rms_difference(image, reference);
+      errors[k].push_back(rmse);
+      table.add_row({samplers[k].first, cell(spp), cell(seconds), cell(rmse), cell(rmse / mean)});
+      run.tick();
+    }
+  }
+  return errors;
+}
+
+/// The random-walk reference at growing photon counts, each against the last (a row each);
+/// returns the last.
+shading::Image sweep_photons(PlateRuns& run, const std::vector<shading::Material>& materials, double mean,
+                             CsvTable& table) {
+  const RenderStudySettings& settings = run.settings;
+  const std::vector<shading::Medium> media(run.plate.grain_instances.size(), grain_medium(kAbsorption));
+  std::vector<shading::Material> reference_materials = materials;
+  reference_materials[0].kind = shading::MaterialKind::kSubsurfaceReference;
+  std::vector<shading::Image> baked_images;
+  std::vector<double> baked_seconds;
+  double seconds = 0.0;
+  for (const long long photons : settings.photons) {
+    shading::BakeStats bake;
+    shading::bake_subsurface(run.plate.scene, run.plate.grain_instances, media, run.plate.lights,
+                             {.photons_per_light = photons, .seed = settings.seed}, &bake);
+    run.tick();
+    stop_point();
+    baked_images.push_back(run(reference_materials, shading::SamplerKind::kSobol, settings.bake_render_spp, seconds));
+    baked_seconds.push_back(bake.seconds + seconds);
+    run.tick();
+  }
+  for (size_t k = 0; k + 1 < baked_images.size(); ++k) {
+    const double rmse = shading::rms_difference(baked_images[k], baked_images.back());
+    table.add_row({"random-walk", cell(static_cast<long>(settings.photons[k])), cell(baked_seconds[k]), cell(rmse),
+                   cell(rmse / mean)});
+  }
+  return baked_images.back();
+}
+
+/// Equal error: the Sobol count whose error matches the largest independent count's, by
+/// log–log interpolation along the Sobol curve.
+double equal_error_spp(const std::vector<int>& samples, const std::vector<double>& independent,
+                       const std::vector<double>& sobol) {
+  const double target = independent.back();
+  for (size_t i = 0; i + 1 < samples.size(); ++i) {
+    const double e0 = sobol[i], e1 = sobol[i + 1];
+    if (e0 >= target && e1 <= target) {
+      const double t = std::log(e0 / target) / std::log(e0 / e1);
+      return samples[i] * std::pow(static_cast<double>(samples[i + 1]) / samples[i], t);
+    }
+  }
+  return samples.back();
+}
+
+void plot_render_study(const std::filesystem::path& folder, int largest_spp, double equal_spp, double cdrf_relative) {
+  render_plot(folder, "render_study", R"(set terminal pngcairo size 900,600
+set output 'render_study.png'
+set datafile separator ','
+set logscale xy
+set format x '10^{%L}'
+set format y '10^{%L}'
+set xlabel 'wall time [s] (log)'
+set ylabel 'RMSE against the reference image (log)'
+set title 'Sobol reaches the error of )" + std::to_string(largest_spp) + R"( independent samples at )" +
+                                     fixed(equal_spp, 0) + R"(; the CDRF sits )" + fixed(100 * cdrf_relative, 0) +
+                                     R"(% RMS from the random walk'
+set key left bottom
+plot for [m in 'independent stratified sobol'] 'render_study.csv' using ((strcol(1) eq m) ? $3 : 1/0):4 \
+       with linespoints pt 7 title m.' (CDRF, spp)', \
+     '' using ((strcol(1) eq 'random-walk') ? $3 : 1/0):4 with linespoints pt 5 lw 2 title 'random walk (photons)', \
+     '' using ((strcol(1) eq 'cdrf-vs-random-walk') ? $3 : 1/0):4 with points pt 9 ps 2 title 'CDRF against the random walk'
+)");
+}
+
 }  // namespace
 
 void validate(const RenderStudySettings& s) {
@@ -93,107 +199,39 @@ void render_study_command(const RenderStudySettings& settings, const std::filesy
   build_plate(plate, settings);
   make_output_folder(folder);
   const shading::CdrfTable cdrf(513, 513);
-  std::vector<shading::Material> materials = {
+  const std::vector<shading::Material> materials = {
       rice_material(kAbsorption), {.kind = shading::MaterialKind::kDiffuse, .albedo = shading::Color::Constant(0.5f)}};
-  auto run = [&](const std::vector<shading::Material>& m, shading::SamplerKind sampler, int spp, double& seconds) {
-    shading::RenderStats stats;
-    const shading::RenderSettings render{.width = settings.width, .height = settings.height, .samples_per_pixel = spp,
-                                         .sampler = sampler, .seed = settings.seed};
-    shading::Image image = shading::render(plate.scene, m, plate.lights, plate.camera, cdrf, render, &stats, {},
-                                           stop_requested);
-    stop_point();
-    seconds = stats.seconds;
-    return image;
-  };
-
   const int runs = 1 + 3 * static_cast<int>(settings.samples.size()) + 2 * static_cast<int>(settings.photons.size()) + 1;
   Progress progress("study render: runs", runs);
-  int done = 0;
+  PlateRuns run{plate, cdrf, settings, progress};
+
   double seconds = 0.0;
   const shading::Image reference = run(materials, shading::SamplerKind::kSobol, settings.reference_spp, seconds);
-  progress.update(++done);
+  run.tick();
   write_png(folder / "reference_cdrf.png", tone_map(reference, 0.0));
   write_exr(folder / "reference_cdrf.exr", reference);
-
   CsvTable table({"method", "knob", "seconds", "rmse", "relative_rmse"});
   double mean = 0.0;
   for (const auto& p : reference.pixels) mean += p.mean() / reference.pixels.size();
-  const std::vector<std::pair<const char*, shading::SamplerKind>> samplers = {
-      {"independent", shading::SamplerKind::kIndependent},
-      {"stratified", shading::SamplerKind::kStratified},
-      {"sobol", shading::SamplerKind::kSobol}};
-  std::vector<std::vector<double>> errors(samplers.size());
-  for (size_t k = 0; k < samplers.size(); ++k) {
-    for (const int spp : settings.samples) {
-      const shading::Image image = run(materials, samplers[k].second, spp, seconds);
-      const double rmse = shading::rms_difference(image, reference);
-      errors[k].push_back(rmse);
-      table.add_row({samplers[k].first, cell(spp), cell(seconds), cell(rmse), cell(rmse / mean)});
-      progress.update(++done);
-    }
-  }
-
-  // The random-walk reference at growing photon counts; the CDRF against the best of them.
-  const std::vector<shading::Medium> media(plate.grain_instances.size(), grain_medium(kAbsorption));
-  std::vector<shading::Material> reference_materials = materials;
-  reference_materials[0].kind = shading::MaterialKind::kSubsurfaceReference;
-  std::vector<shading::Image> baked_images;
-  std::vector<double> baked_seconds;
-  for (const long long photons : settings.photons) {
-    shading::BakeStats bake;
-    shading::bake_subsurface(plate.scene, plate.grain_instances, media, plate.lights,
-                             {.photons_per_light = photons, .seed = settings.seed}, &bake);
-    progress.update(++done);
-    stop_point();
-    baked_images.push_back(run(reference_materials, shading::SamplerKind::kSobol, settings.bake_render_spp, seconds));
-    baked_seconds.push_back(bake.seconds + seconds);
-    progress.update(++done);
-  }
-  const shading::Image& best = baked_images.back();
+  const std::vector<std::vector<double>> errors =
+      sweep_samplers(run, materials, reference, mean,
+                     {{"independent", shading::SamplerKind::kIndependent},
+                      {"stratified", shading::SamplerKind::kStratified},
+                      {"sobol", shading::SamplerKind::kSobol}},
+                     table);
+  const shading::Image best = sweep_photons(run, materials, mean, table);
   write_png(folder / "reference_random_walk.png", tone_map(best, 0.0));
   write_exr(folder / "reference_random_walk.exr", best);
-  for (size_t k = 0; k + 1 < baked_images.size(); ++k) {
-    const double rmse = shading::rms_difference(baked_images[k], best);
-    table.add_row({"random-walk", cell(static_cast<long>(settings.photons[k])), cell(baked_seconds[k]), cell(rmse),
-                   cell(rmse / mean)});
-  }
   const shading::Image cdrf_image = run(materials, shading::SamplerKind::kSobol, settings.bake_render_spp, seconds);
-  progress.update(++done);
+  run.tick();
   progress.finish();
   const double cdrf_error = shading::rms_difference(cdrf_image, best);
   table.add_row({"cdrf-vs-random-walk", cell(settings.bake_render_spp), cell(seconds), cell(cdrf_error),
                  cell(cdrf_error / mean)});
   write_file_atomically(folder / "render_study.csv", table.text());
 
-  // Equal error: the Sobol count whose error matches the largest independent count's, by
-  // log–log interpolation along the Sobol curve.
-  const double target = errors[0].back();
-  double equal_spp = settings.samples.back();
-  for (size_t i = 0; i + 1 < settings.samples.size(); ++i) {
-    const double e0 = errors[2][i], e1 = errors[2][i + 1];
-    if (e0 >= target && e1 <= target) {
-      const double t = std::log(e0 / target) / std::log(e0 / e1);
-      equal_spp = settings.samples[i] * std::pow(static_cast<double>(settings.samples[i + 1]) / settings.samples[i], t);
-      break;
-    }
-  }
-  render_plot(folder, "render_study", R"(set terminal pngcairo size 900,600
-set output 'render_study.png'
-set datafile separator ','
-set logscale xy
-set format x '10^{%L}'
-set format y '10^{%L}'
-set xlabel 'wall time [s] (log)'
-set ylabel 'RMSE against the reference image (log)'
-set title 'Sobol reaches the error of )" + std::to_string(settings.samples.back()) + R"( independent samples at )" +
-                                     fixed(equal_spp, 0) + R"(; the CDRF sits )" + fixed(100 * cdrf_error / mean, 0) +
-                                     R"(% RMS from the random walk'
-set key left bottom
-plot for [m in 'independent stratified sobol'] 'render_study.csv' using ((strcol(1) eq m) ? $3 : 1/0):4 \
-       with linespoints pt 7 title m.' (CDRF, spp)', \
-     '' using ((strcol(1) eq 'random-walk') ? $3 : 1/0):4 with linespoints pt 5 lw 2 title 'random walk (photons)', \
-     '' using ((strcol(1) eq 'cdrf-vs-random-walk') ? $3 : 1/0):4 with points pt 9 ps 2 title 'CDRF against the random walk'
-)");
+  const double equal_spp = equal_error_spp(settings.samples, errors[0], errors[2]);
+  plot_render_study(folder, settings.samples.back(), equal_spp, cdrf_error / mean);
   write_file_atomically(folder / "run_info.txt",
                         run_info({{"study", "render"},
                                   {"width", cell(settings.width)},
