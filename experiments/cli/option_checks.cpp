@@ -6,20 +6,13 @@
 #include <cstdint>
 #include <string>
 
+#include "experiments/io/csv_table.hpp"
+
 namespace rice::experiments {
-namespace {
-
-std::string number_text(double value) {
-  char buffer[32];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-  return std::string(buffer, end);
-}
-
-}  // namespace
 
 CLI::Validator number_in(double low, double high, Ends ends) {
-  const std::string range = std::string(ends == Ends::kOpenLow ? "(" : "[") + number_text(low) + ", " +
-                            number_text(high) + (ends == Ends::kOpenHigh ? ")" : "]");
+  const std::string range = std::string(ends == Ends::kOpenLow ? "(" : "[") + cell(low) + ", " +
+                            cell(high) + (ends == Ends::kOpenHigh ? ")" : "]");
   return CLI::Validator(
       [=](std::string& input) -> std::string {
         double value = 0.0;

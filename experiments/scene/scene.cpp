@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 
+#include "experiments/io/csv_table.hpp"
 #include "experiments/scene/scene_keys.hpp"
 #include "grains/cultivar.hpp"
 
@@ -44,8 +45,8 @@ void validate_container_emitter_effects(const Scene& s) {
   check(scene_key("effects", "static_friction"), s.effects.static_friction);
   check(scene_key("effects", "dynamic_friction"), s.effects.dynamic_friction);
   require(s.effects.dynamic_friction <= s.effects.static_friction,
-          "need dynamic_friction <= static_friction, got " + number_text(s.effects.dynamic_friction) + " and " +
-              number_text(s.effects.static_friction));
+          "need dynamic_friction <= static_friction, got " + cell(s.effects.dynamic_friction) + " and " +
+              cell(s.effects.static_friction));
 }
 
 void validate_colliders(const Scene& s) {

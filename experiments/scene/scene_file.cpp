@@ -9,6 +9,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "experiments/io/csv_table.hpp"
 #include "experiments/scene/toml_section.hpp"
 #include "grains/mesh_io.hpp"
 #include "grains/mesh_topology.hpp"
@@ -103,8 +104,8 @@ void read_effects(TomlSection section, SceneEffects& e) {
   e.dynamic_friction = section.number("dynamic_friction");
   if (e.dynamic_friction > e.static_friction) {
     if (section.has("dynamic_friction"))
-      section.require(false, "dynamic_friction", "at most static_friction (" + number_text(e.static_friction) + ")");
-    section.require(false, "static_friction", "at least dynamic_friction (" + number_text(e.dynamic_friction) + ")");
+      section.require(false, "dynamic_friction", "at most static_friction (" + cell(e.static_friction) + ")");
+    section.require(false, "static_friction", "at least dynamic_friction (" + cell(e.dynamic_friction) + ")");
   }
   if (!friction) e.static_friction = e.dynamic_friction = 0.0;
   e.cohesion = section.flag("cohesion");
@@ -139,7 +140,7 @@ std::vector<xpbd::ColliderKeyframe> read_keyframes(TomlSection& section, const t
     if (std::isnan(time)) key.fail_here("needs time_s");
     if (!motion.empty())
       key.require(time > motion.back().time, "time_s",
-                  "a time in s after the previous keyframe's (" + number_text(motion.back().time) + " s)");
+                  "a time in s after the previous keyframe's (" + cell(motion.back().time) + " s)");
     motion.push_back(read_pose(key, time));
     key.finish();
   }
@@ -210,7 +211,7 @@ int read_collider(const toml::table& table, const std::string& source, const std
   c.static_friction = section.number("static_friction", scene.effects.static_friction);
   c.dynamic_friction = section.number("dynamic_friction", std::min(scene.effects.dynamic_friction, c.static_friction));
   if (c.dynamic_friction > c.static_friction)
-    section.require(false, "dynamic_friction", "at most static_friction (" + number_text(c.static_friction) + ")");
+    section.require(false, "dynamic_friction", "at most static_friction (" + cell(c.static_friction) + ")");
   const toml::node* keyframes = section.claim("keyframes");
   c.motion = keyframes ? read_keyframes(section, *keyframes, source, name) : std::vector{read_pose(section, 0.0)};
   section.finish();

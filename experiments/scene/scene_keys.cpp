@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <stdexcept>
 
+#include "experiments/io/csv_table.hpp"
 #include "grains/cultivar.hpp"
 
 namespace rice::experiments {
@@ -183,7 +184,7 @@ std::string type_name(const SceneKey& key) {
 
 /// The shortest text of `value` with a plain exponent: "1e9", "2e-4", "0.3".
 std::string readable_number(double value) {
-  std::string text = number_text(value);
+  std::string text = cell(value);
   const size_t e = text.find('e');
   if (e == std::string::npos) return text;
   size_t digits = e + 1;
@@ -227,11 +228,6 @@ std::string quoted_choices(const SceneKey& key, const std::string& quote) {
 }
 
 }  // namespace
-
-std::string number_text(double value) {
-  char buffer[32];
-  return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
-}
 
 const std::vector<SceneSection>& scene_sections() {
   static const std::vector<SceneSection> sections{
@@ -292,7 +288,7 @@ std::string expected(const SceneKey& key) {
 
 void check(const SceneKey& key, double value) {
   if (!accepts(key, value))
-    throw std::invalid_argument("[" + key.section + "] " + key.name + " = " + number_text(value) + ": expected " +
+    throw std::invalid_argument("[" + key.section + "] " + key.name + " = " + cell(value) + ": expected " +
                                 expected(key));
 }
 

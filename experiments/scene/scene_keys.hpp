@@ -70,9 +70,6 @@ std::string expected(const SceneKey& key);
 /// accept `value`.
 void check(const SceneKey& key, double value);
 
-/// The shortest text that reads back as `value`.
-std::string number_text(double value);
-
 /// The scene-file reference: every section and key as Markdown tables.
 std::string scene_keys_markdown();
 

@@ -7,6 +7,8 @@
 #include <optional>
 #include <sstream>
 
+#include "experiments/io/csv_table.hpp"
+
 namespace rice::experiments {
 namespace {
 
@@ -19,7 +21,7 @@ std::string joined(const std::vector<std::string>& words) {
 /// A value as a file would write it, for messages.
 std::string shown(const toml::node& node) {
   if (const auto* text = node.as_string()) return '"' + text->get() + '"';
-  if (const auto* number = node.as_floating_point()) return number_text(number->get());
+  if (const auto* number = node.as_floating_point()) return cell(number->get());
   std::ostringstream out;
   node.visit([&](const auto& value) { out << value; });
   return out.str();
