@@ -91,14 +91,15 @@ TEST(ClumpEmitter, EveryLayerLeavesAtOnceStackedAboveTheOneBelow) {
 }
 
 TEST(FillEmitter, FillsTheMouldsFreeLatticePointsRoundByRoundUntilItGoes) {
-  // 800 grains of one variant and the shari mould, whose lattice holds 364.
+  // 1200 grains of one variant and the shari mould, whose lattice holds a few hundred (364 in
+  // the gcc build, 441 in the clang one, whose grain meshes differ in the last bits).
   const Scene scene = read_scene_file(std::filesystem::path(RICE_SCENES_DIR) / "shari.toml",
-                                      {"grains.count=800", "grains.variants=1"});
+                                      {"grains.count=1200", "grains.variants=1"});
   FillEmitter fill(scene);
   World world = build_world(scene, fill);
   const xpbd::Collider& mould = world.model.colliders[world.first_mesh_collider + scene.emitter.mould];
   const int lattice = world.parking_row;
-  ASSERT_LT(2 * lattice, 800);
+  ASSERT_LT(2 * lattice, 1200);
   for (int g = 0; g < lattice; ++g) {
     EXPECT_GT(xpbd::local_signed_distance(mould, world.drops[g]).distance, 0.0);  // in the mould's room
     const Eigen::Quaterniond& R = world.instances[g].rotation;  // along the axes: a half turn or none
