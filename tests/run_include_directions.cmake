@@ -1,4 +1,4 @@
-# Dependencies point one way (DESIGN.md): between the modules, experiments -> {grains, xpbd,
+# Dependencies point one way: between the modules, experiments -> {grains, xpbd,
 # fem_reference, shading} and fem_reference -> xpbd; inside experiments/, cli -> studies,
 # figures -> scene -> pile, render -> io. A file may include its own folder's headers and
 # those of folders below it, never one beside or above it. Fails naming each include that

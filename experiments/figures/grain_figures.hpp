@@ -1,4 +1,4 @@
-// Paper Figures 8 and 9 (until the renderer exists: meshes and level-set cross-sections).
+// Paper Figures 8 and 9: grain meshes and their level-set cross-sections.
 //   Figure 8: automatically generated japonica grains of different sizes (swell factor P
 //             from 1 to 1.5, eq. 2).
 //   Figure 9: indica, japonica and aromatic grains side by side, their generated dimensions

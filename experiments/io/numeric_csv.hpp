@@ -1,5 +1,5 @@
 // Reading back the CSV tables the drivers write (a header row, then rows of numbers), for
-// commands that build on another command's output (`rice render --pour`).
+// commands that build on another command's output (`rice render --run`).
 #pragma once
 
 #include <filesystem>
