@@ -129,7 +129,8 @@ GrainRadiance measure_grains(const GrainRow& row, const shading::Image& image, c
                              const RowView& view) {
   const int n = row.n, width = view.render.width, height = view.render.height;
   const double aspect = static_cast<double>(width) / height;
-  GrainRadiance m{.lit = std::vector<double>(n, 0.0)};
+  GrainRadiance m;
+  m.lit.assign(n, 0.0);
   m.shaded = m.reference_lit = m.reference_shaded = m.rms = m.mean = m.lit;
   std::vector<double> squared(n, 0.0);
   std::vector<int> lit_count(n, 0), shaded_count(n, 0);

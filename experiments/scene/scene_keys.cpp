@@ -204,7 +204,10 @@ std::string end_text(const SceneKey& key, double value) {
 
 std::string range_text(const SceneKey& key) {
   const KeyRange& r = key.range;
-  return (r.open_low ? "(" : "[") + end_text(key, r.low) + ", " + end_text(key, r.high) + (r.open_high ? ")" : "]");
+  // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string.
+  std::string text = r.open_low ? "(" : "[";
+  for (const std::string& piece : {end_text(key, r.low), std::string(", "), end_text(key, r.high)}) text += piece;
+  return text + (r.open_high ? ")" : "]");
 }
 
 std::string default_text(const SceneKey& key) {
@@ -215,7 +218,9 @@ std::string default_text(const SceneKey& key) {
     std::string operator()(bool v) const { return v ? "true" : "false"; }
     std::string operator()(const std::string& v) const { return "\"" + v + "\""; }
     std::string operator()(const std::array<double, 3>& v) const {
-      return "[" + readable_number(v[0]) + ", " + readable_number(v[1]) + ", " + readable_number(v[2]) + "]";
+      std::string text = "[";  // appended: see range_text
+      for (size_t i = 0; i < 3; ++i) (text += i ? ", " : "") += readable_number(v[i]);
+      return text + "]";
     }
   };
   return std::visit(Shown{}, key.fallback);
