@@ -50,10 +50,9 @@ TomlSection::TomlSection(const toml::table* table, std::string source, std::stri
 
 double TomlSection::checked_number(const std::string& key, const toml::node& node, bool whole) {
   const SceneKey& k = spec(key);
-  const std::optional<double> value = whole ? (node.is_integer() ? std::optional<double>(static_cast<double>(
-                                                                       *node.value<std::int64_t>()))
-                                                                 : std::nullopt)
-                                            : (node.is_number() ? node.value<double>() : std::nullopt);
+  std::optional<double> value;
+  if (whole && node.is_integer()) value = static_cast<double>(*node.value<std::int64_t>());  // seeds past 2^53 too
+  if (!whole && node.is_number()) value = node.value<double>();
   if (!value || !accepts(k, *value)) fail(node, key, expected(k));
   return *value;
 }
