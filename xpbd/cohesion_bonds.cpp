@@ -30,12 +30,45 @@ void CohesionBonds::begin_substep(const Model& model, const std::vector<Touch>& 
     sorted_ = false;
   }
   broken_pairs_ = std::move(still_touching);
-  for (Bond& bond : bonds_) bond.lambda = 0.0;
+  for (Bond& bond : bonds_) {
+    bond.lambda = 0.0;
+    bond.held = -1;
+  }
+}
+
+void CohesionBonds::hold_in_particle_steps(const Model& model, ParticleContacts& terms) {
+  const double compliance = model.contact.bond_compliance;
+  if (!(compliance > 0.0)) return;  // a hard bond has no spring constant: it stays a projection
+  for (Bond& bond : bonds_) {
+    const Body& a = model.bodies[bond.key[0]];
+    const Body& b = model.bodies[bond.key[1]];
+    if (a.kind != BodyKind::kSoft || b.kind != BodyKind::kSoft || (a.asleep && b.asleep)) continue;
+    ParticleBond term;
+    const auto add_sphere = [&](const Body& body, int s, double sign) {
+      for (int k = 0; k < 4; ++k) {
+        term.point.particles[term.point.size] = body.anchors[s][k];
+        term.point.weights[term.point.size++] = sign * body.weights[s][k];
+      }
+    };
+    add_sphere(a, bond.key[2], 1.0);
+    add_sphere(b, bond.key[3], -1.0);
+    term.offset = bond.anchor_a - bond.anchor_b;  // soft material coordinates: offsets from the centres
+    term.length = bond.length;
+    term.stiffness = 1.0 / compliance;
+    bond.held = static_cast<int>(terms.bonds().size());
+    terms.add(term);
+  }
+}
+
+void CohesionBonds::take_particle_forces(const ParticleContacts& terms, const Positions& x, double h) {
+  for (Bond& bond : bonds_)
+    if (bond.held >= 0) bond.lambda = -terms.bonds()[bond.held].pull(x) * h * h;
 }
 
 void CohesionBonds::project(Model& model, double h) {
   const double alpha_tilde = model.contact.bond_compliance / (h * h);
   for (Bond& bond : bonds_) {
+    if (bond.held >= 0) continue;  // a term of the particles' steps
     const auto [ia, ib, sa, sb] = bond.key;
     const Body& a = model.bodies[ia];
     const Body& b = model.bodies[ib];

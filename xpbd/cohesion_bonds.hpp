@@ -10,6 +10,9 @@
 // all break when their summed force Σ|λ|/h² exceeds the pair's strength, the smaller of the
 // two bodies' Body::bond_strength, so that strength is the pull-off force of the pair
 // whatever the number of bonds. The strength law lives in grains/water_content.
+// Under vertex block descent a compliant bond between two soft bodies is instead a spring term
+// of each particle's step (particle_contacts.hpp): hold_in_particle_steps hands those over,
+// and take_particle_forces reads back the force that breaks them.
 #pragma once
 
 #include <array>
@@ -17,6 +20,7 @@
 #include <vector>
 
 #include "xpbd/model.hpp"
+#include "xpbd/particle_contacts.hpp"
 
 namespace rice::xpbd {
 
@@ -34,6 +38,11 @@ class CohesionBonds {
   /// not separated since (a pair pulled apart is not glued back before it moves), and resets
   /// the multipliers. `x_previous`: the particle positions at the substep's start.
   void begin_substep(const Model& model, const std::vector<Touch>& touches, const Positions& x_previous);
+  /// Adds every bond between two soft bodies, not both asleep, to `terms` as a spring of
+  /// stiffness 1/α (α > 0); project() then skips them. Call after begin_substep.
+  void hold_in_particle_steps(const Model& model, ParticleContacts& terms);
+  /// After the sweeps: each held bond's impulse λ = −k* C_b h² at x, for end_substep.
+  void take_particle_forces(const ParticleContacts& terms, const Positions& x, double h);
   /// Breaks the body pairs whose bonds' force over the substep exceeded their strength.
   void end_substep(double h);
   int count() const { return static_cast<int>(bonds_.size()); }
@@ -46,6 +55,7 @@ class CohesionBonds {
     double length;            ///< d₀ [m]
     double strength;          ///< [N]
     double lambda = 0.0;      ///< this substep's positional impulse [kg m]
+    int held = -1;            ///< its index among the particle terms' bonds, when held there
   };
   void sort_bonds();
   /// Sorted by key at each substep's end (a substep's new bonds are appended), so a pair's

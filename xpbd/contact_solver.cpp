@@ -44,6 +44,11 @@ ContactSolver::ContactSolver(Model& model, bool parallel) : model_(model), paral
   start_box_.resize(model.bodies.size());
   motion_.assign(model.bodies.size(), 0.0);
   centres_at_rest_.assign(model.bodies.size(), 0);
+  body_of_particle_.assign(model.particles.size(), -1);
+  for (size_t b = 0; b < model.bodies.size(); ++b)
+    if (model.bodies[b].kind == BodyKind::kSoft)
+      std::fill_n(body_of_particle_.begin() + model.bodies[b].first_particle, model.bodies[b].particle_count,
+                  static_cast<int>(b));
   has_friction_ = s.static_friction > 0.0;
   for (size_t c = 0; c < model.colliders.size(); ++c) {
     validate(model.colliders[c], static_cast<int>(c));
@@ -251,6 +256,7 @@ void ContactSolver::begin_substep(double time, double h, const Positions& x_prev
     for (; old != previous.end() && old->key < key; ++old) {
       old->anchored = false;
       old->particle_force = 0.0;
+      old->friction_force.setZero();
       states_.push_back(*old);
     }
     if (old != previous.end() && old->key == key) {
@@ -266,6 +272,7 @@ void ContactSolver::begin_substep(double time, double h, const Positions& x_prev
   for (; old != previous.end(); ++old) {
     old->anchored = false;
     old->particle_force = 0.0;
+    old->friction_force.setZero();
     states_.push_back(*old);
   }
   statistics_.contacts = static_cast<int>(contacts_.size());
@@ -277,40 +284,58 @@ void ContactSolver::begin_substep(double time, double h, const Positions& x_prev
     if (model_.bodies[a].kind != BodyKind::kSoft || (!is_collider(b) && model_.bodies[b].kind != BodyKind::kSoft))
       continue;
     contact.particle_contact = static_cast<int>(particle_contacts_.contacts().size());
-    particle_contacts_.add(make_particle_contact(contact));
+    particle_contacts_.add(make_particle_contact(contact, x_previous));
   }
-  particle_contacts_.index(model_.particles.size());
+  if (bonds_) bonds_->hold_in_particle_steps(model_, particle_contacts_);
+  particle_contacts_.index(model_.particles.size(), body_of_particle_, static_cast<int>(model_.bodies.size()));
+  particle_contacts_.set_friction_bounds(model_.particles.x);
 }
 
-ParticleContact ContactSolver::make_particle_contact(const Contact& contact) const {
-  const auto [a, b, sa, sb] = states_[contact.state].key;
+ParticleContact ContactSolver::make_particle_contact(const Contact& contact, const Positions& x_previous) const {
+  const ContactState& state = states_[contact.state];
+  const auto [a, b, sa, sb] = state.key;
   ParticleContact c;
-  c.force = states_[contact.state].particle_force;
+  c.force = state.particle_force;
   c.stiffness = model_.contact.particle_stiffness;
   const auto add_sphere = [&](const Body& body, int s, double sign) {
     for (int k = 0; k < 4; ++k) {
-      c.particles[c.size] = body.anchors[s][k];
-      c.weights[c.size++] = sign * body.weights[s][k];
+      c.point.particles[c.point.size] = body.anchors[s][k];
+      c.point.weights[c.point.size++] = sign * body.weights[s][k];
     }
   };
   add_sphere(model_.bodies[a], sa, 1.0);
+  Vec3 collider_motion = Vec3::Zero();  // of the collider point over the substep
   if (is_collider(b)) {
     const ColliderKeyframe& end = pose_end_[collider_index(b)];
     c.normal = end.rotation * contact.normal;
-    c.offset = c.normal.dot(to_world(end, contact.collider_point)) + radius(a, sa);
+    const Vec3 q = to_world(end, contact.collider_point);
+    c.offset = c.normal.dot(q) + radius(a, sa);
+    collider_motion = q - to_world(pose_start_[collider_index(b)], contact.collider_point);
   } else {
     add_sphere(model_.bodies[b], sb, -1.0);
     c.normal = contact.normal;
     c.offset = radius(a, sa) + radius(b, sb);
+  }
+  if (has_friction_) {
+    c.friction = state.sliding ? dynamic_friction(b) : static_friction(b);
+    c.slip_origin = c.point.at(x_previous) + collider_motion;
+    // The last substep's friction force, in this substep's tangent plane.
+    c.friction_force = state.friction_force - c.normal.dot(state.friction_force) * c.normal;
+    c.sliding = state.sliding;
   }
   return c;
 }
 
 void ContactSolver::update_particle_contacts() {
   const Positions& x = model_.particles.x;
-  for (Contact& contact : contacts_)
-    if (contact.particle_contact >= 0)
-      contact.lambda_normal = particle_contacts_.contacts()[contact.particle_contact].push(x) * h_ * h_;
+  for (Contact& contact : contacts_) {
+    if (contact.particle_contact < 0) continue;
+    const ParticleContact& c = particle_contacts_.contacts()[contact.particle_contact];
+    contact.lambda_normal = c.push(x) * h_ * h_;
+    // The friction impulse on a over the substep: f_t h² (a's corners take +a_j f_t).
+    if (c.friction_bound > 0.0) contact.friction = c.friction_at(c.point.at(x), c.friction_bound) * (h_ * h_);
+  }
+  particle_contacts_.set_friction_bounds(x);
 }
 
 template <class StateOf>
@@ -436,6 +461,7 @@ void ContactSolver::project_friction(Contact& contact, const Positions& x_previo
   ContactState& state = states_[contact.state];
   const int b = state.key[1];
   contact.capped = false;
+  if (contact.particle_contact >= 0) return;  // a term of the particles' steps
   if (contact.lambda_normal == 0.0) return;  // not touching: no friction
   const ContactPoints p = locate(contact);
   const Vec3 tangential =
@@ -448,8 +474,7 @@ void ContactSolver::project_friction(Contact& contact, const Positions& x_previo
   const double needed = slip / w;
   double delta = needed;
   if (state.sliding) {
-    const double mu_k =
-        is_collider(b) ? model_.colliders[collider_index(b)].dynamic_friction : model_.contact.dynamic_friction;
+    const double mu_k = dynamic_friction(b);
     delta = std::min(needed, std::max(mu_k * contact.lambda_normal - contact.lambda_tangent, 0.0));
     contact.capped = needed > delta;
   }
@@ -480,10 +505,11 @@ void ContactSolver::solve_velocities() {
 void ContactSolver::end_substep(bool end_of_interval) {
   // Particle contacts: the multiplier step λ ← max(0, λ − k C), once a substep, carried to the
   // next (once a sweep, it overshot: a grain on a plane at h = 1/60 s rang at ±100% of its weight).
-  if (particle_steps_) particle_contacts_.update_forces(model_.particles.x);
-  for (const Contact& contact : contacts_)
-    if (contact.particle_contact >= 0)
-      states_[contact.state].particle_force = particle_contacts_.contacts()[contact.particle_contact].force;
+  // Their friction's too, λ_t ← f_t, and whether each slides (particle_contacts.hpp).
+  if (particle_steps_) {
+    particle_contacts_.update_forces(model_.particles.x);
+    if (bonds_) bonds_->take_particle_forces(particle_contacts_, model_.particles.x, h_);
+  }
   // Coulomb's law for a body pair (or a body and a collider) over all its contacts. A sticking
   // pair, whose friction cancelled its slip in full, starts to slide when the net friction
   // impulse over the broad-phase interval |Σ f_t| exceeded μ_s Σλ_n; summing over substeps keeps
@@ -498,8 +524,7 @@ void ContactSolver::end_substep(bool end_of_interval) {
   for (size_t first = 0; first < contacts_.size();) {
     const auto& key = states_[contacts_[first].state].key;
     const bool sliding = states_[contacts_[first].state].sliding;
-    const double mu_s = is_collider(key[1]) ? model_.colliders[collider_index(key[1])].static_friction
-                                            : model_.contact.static_friction;
+    const double mu_s = static_friction(key[1]);
     size_t last = first;
     bool touching = false, stuck = false;
     double normal = 0.0;
@@ -522,10 +547,27 @@ void ContactSolver::end_substep(bool end_of_interval) {
     }
     const bool slides =
         has_friction_ && touching && (sliding ? !stuck : end_of_interval && friction.norm() > mu_s * normal);
+    // Held in the particles' steps, the pair slides when every one of its touching contacts
+    // ended the substep on its cone, and sticks when one lay inside. (Judged contact by contact,
+    // a grain set on a plane tilted to 0.9 μ_s saw three of its ten contacts reach the cone,
+    // slide at μ_k, hand their load to the others, and the whole grain slid away.)
+    bool held_touching = false, all_on_cone = true;
+    for (size_t c = first; c < last; ++c) {
+      if (contacts_[c].particle_contact < 0) continue;
+      const ParticleContact& held = particle_contacts_.contacts()[contacts_[c].particle_contact];
+      if (held.force == 0.0) continue;
+      held_touching = true;
+      all_on_cone = all_on_cone && held.sliding;
+    }
     for (size_t c = first; c < last; ++c) {
       ContactState& state = states_[contacts_[c].state];
       state.sliding = slides;
       state.anchored = state.anchored && !slides && contacts_[c].lambda_normal > 0.0;
+      if (contacts_[c].particle_contact < 0) continue;
+      const ParticleContact& held = particle_contacts_.contacts()[contacts_[c].particle_contact];
+      state.particle_force = held.force;
+      state.friction_force = held.friction_force;
+      state.sliding = held_touching && all_on_cone;
     }
     first = last;
   }

@@ -74,15 +74,16 @@ class ContactSolver {
 
   const ContactStatistics& statistics() const { return statistics_; }
 
-  /// Vertex block descent: contacts of soft bodies' spheres with each other and with colliders
-  /// become terms of each particle's step (particle_contacts.hpp) from the next substep on,
-  /// instead of projections; contacts with rigid bodies stay projections. Friction is still
-  /// projected after each sweep, capped by the terms' forces.
+  /// Vertex block descent: contacts of soft bodies' spheres with each other and with colliders,
+  /// their friction, and compliant bonds between soft bodies become terms of each particle's
+  /// step (particle_contacts.hpp) from the next substep on, instead of projections; contacts
+  /// and bonds with rigid bodies stay projections.
   void hold_in_particle_steps() { particle_steps_ = true; }
   const ParticleContacts& particle_contacts() const { return particle_contacts_; }
-  /// After each sweep: takes the force each particle contact pushes with, max(0, λ − k C), as
-  /// its normal impulse (times h²) for friction, velocities and statistics. (Its multiplier
-  /// step is taken at the substep's end, in end_substep.)
+  /// After each sweep: takes the force each particle contact pushes with, max(0, λ − k C), and
+  /// its friction force as its impulses (times h²) for velocities and statistics, and lags the
+  /// friction bounds μ f_n for the next sweep. (The multiplier step is taken at the substep's
+  /// end, in end_substep.)
   void update_particle_contacts();
 
  private:
@@ -98,6 +99,7 @@ class ContactSolver {
     double interval_normal = 0.0;             ///< Σλ_n over the interval's substeps so far
     Vec3 interval_friction = Vec3::Zero();    ///< Σ friction impulses over them
     double particle_force = 0.0;  ///< held in particle steps: its force λ at the last substep's end [N]
+    Vec3 friction_force = Vec3::Zero();  ///< held in particle steps: its friction force λ_t then [N]
   };
   /// A body pair from the broad phase (or a body and a collider, b < 0) with its candidate
   /// sphere pairs (s_a, s_b), sphere_pairs_[first, last), increasing.
@@ -151,7 +153,14 @@ class ContactSolver {
   void add_contacts(const BodyPair& pair, StateOf& state_of, std::vector<CohesionBonds::Touch>& touches);
   void project_normal(Contact& contact);
   /// The particle-step form of a contact between soft spheres or a soft sphere and a collider.
-  ParticleContact make_particle_contact(const Contact& contact) const;
+  ParticleContact make_particle_contact(const Contact& contact, const Positions& x_previous) const;
+  /// μ_s and μ_k against b: the collider's, or those between grains.
+  double static_friction(int b) const {
+    return is_collider(b) ? model_.colliders[collider_index(b)].static_friction : model_.contact.static_friction;
+  }
+  double dynamic_friction(int b) const {
+    return is_collider(b) ? model_.colliders[collider_index(b)].dynamic_friction : model_.contact.dynamic_friction;
+  }
   void project_friction(Contact& contact, const Positions& x_previous);
   void update_bonds();
 
@@ -181,6 +190,7 @@ class ContactSolver {
   double h_ = 0.0;  ///< the current substep's length
   bool particle_steps_ = false;
   ParticleContacts particle_contacts_;
+  std::vector<int> body_of_particle_;  ///< the soft body each particle belongs to, or −1
 };
 
 }  // namespace rice::xpbd

@@ -31,10 +31,11 @@ enum class Method {
   kPbd,   ///< classic PBD: stiffness k ∈ [0, 1] per projection, no λ; kept to show what XPBD fixes
   /// Vertex block descent on the Neo-Hookean tets' backward-Euler potential
   /// (vertex_block_descent.hpp): K sweeps of per-particle Newton steps, stable at substeps far
-  /// past the tets' wave-crossing time. The ground, compliant attachments and contacts of
-  /// soft bodies' spheres (with each other and with colliders) are terms of each particle's
-  /// step; hard attachments (α = 0), friction and contacts with rigid bodies stay projections
-  /// after each sweep; springs and tet volumes are not supported.
+  /// past the tets' wave-crossing time. The ground, compliant attachments, and contacts of
+  /// soft bodies' spheres (with each other and with colliders) with their friction and
+  /// compliant bonds are terms of each particle's step; hard attachments and bonds (α = 0)
+  /// and contacts with rigid bodies stay projections after each sweep; springs and tet
+  /// volumes are not supported.
   kVbd,
 };
 

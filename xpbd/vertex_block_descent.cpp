@@ -58,6 +58,8 @@ VertexBlockDescent::VertexBlockDescent(const Model& model) {
     for (int k = 0; k < 4; ++k) corners_[next[t.particles[k]]++] = {static_cast<int>(e), k};
   }
   coloring_ = color_particles(model, first_corner_, corners_);
+  for (size_t b = 0; b < model.bodies.size(); ++b)
+    if (model.bodies[b].kind == BodyKind::kSoft) soft_bodies_.push_back(static_cast<int>(b));
   first_spring_.assign(n + 1, 0);
   for (const Attachment& a : model.attachments)
     if (a.compliance > 0.0) ++first_spring_[a.particle + 1];
@@ -105,6 +107,13 @@ void VertexBlockDescent::sweep(Model& model, const Positions& y, bool parallel, 
     for (const int i : members)
       if (in_contact(i)) visit(i);
   }
+  // Then each soft body as a whole: the particles' steps leave its translation (see the header).
+  if (model.ground) return;
+  for (const int b : soft_bodies_) {
+    const Body& body = model.bodies[b];
+    if (body.asleep || (!frozen.empty() && frozen[body.first_particle])) continue;
+    body_step(model, y, b, contacts);
+  }
 }
 
 double VertexBlockDescent::particle_energy(const Model& model, const Positions& y, int i, const Vec3& xi,
@@ -133,6 +142,47 @@ double VertexBlockDescent::particle_energy(const Model& model, const Positions& 
     }
   }
   return energy;
+}
+
+void VertexBlockDescent::body_step(Model& model, const Positions& y, int b, const ParticleContacts* contacts) const {
+  const Body& body = model.bodies[b];
+  Positions& x = model.particles.x;
+  const Eigen::VectorXd& w = model.particles.w;
+  const int first = body.first_particle, last = body.first_particle + body.particle_count;
+  Vec3 gradient = Vec3::Zero();
+  Mat3 hessian = Mat3::Zero();
+  for (int i = first; i < last; ++i) {
+    if (w[i] == 0.0) return;  // pinned: the body cannot translate
+    const double inertia = 1.0 / (w[i] * h_ * h_);
+    gradient += inertia * (position(x, i) - position(y, i));
+    hessian.diagonal().array() += inertia;
+    for (int s = first_spring_[i]; s < first_spring_[i + 1]; ++s) {
+      const Attachment& a = model.attachments[springs_[s]];
+      gradient += (position(x, i) - a.target) / a.compliance;
+      hessian.diagonal().array() += 1.0 / a.compliance;
+    }
+  }
+  if (contacts) contacts->add_body_terms(x, b, gradient, hessian);
+  // E of the body's translation by δ, up to a constant (its tets' terms do not change).
+  const auto energy = [&](const Vec3& shift) {
+    double e = contacts ? contacts->body_energy(x, b, shift) : 0.0;
+    for (int i = first; i < last; ++i) {
+      e += 0.5 / (w[i] * h_ * h_) * (position(x, i) + shift - position(y, i)).squaredNorm();
+      for (int s = first_spring_[i]; s < first_spring_[i + 1]; ++s) {
+        const Attachment& a = model.attachments[springs_[s]];
+        e += 0.5 / a.compliance * (position(x, i) + shift - a.target).squaredNorm();
+      }
+    }
+    return e;
+  };
+  Vec3 step = -hessian.llt().solve(gradient);
+  if (!step.allFinite()) return;
+  const double start = energy(Vec3::Zero());
+  for (int halvings = 0; energy(step) > start; ++halvings) {
+    if (halvings == 8) return;
+    step *= 0.5;
+  }
+  for (int i = first; i < last; ++i) position(x, i) += step;
 }
 
 void VertexBlockDescent::solve_particle(Model& model, const Positions& y, int i,

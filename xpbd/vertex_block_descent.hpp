@@ -20,8 +20,10 @@
 // would raise E is halved until it does not. Every sweep lowers E.
 //
 // Contacts between soft bodies' collision spheres, and of those with colliders, are terms of
-// E held by an augmented Lagrangian (particle_contacts.hpp), so the sweeps' fixed point is the
-// step with its contact forces, as the reference's barrier gives it (without a gap).
+// E held by an augmented Lagrangian, with their Coulomb friction (a bounded tangential
+// multiplier) and the cohesive bonds between soft bodies (springs that only pull;
+// particle_contacts.hpp), so the sweeps' fixed point is the step with its contact, friction
+// and bond forces, and no sweep adds energy through a projection after it.
 //
 // Compliant attachments are springs ½‖x_i − p‖²/α in E (the reference's potential for them);
 // those with α = 0 stay projections after each sweep (solver.cpp).
@@ -36,6 +38,21 @@
 // 6 mm/s.) Handled after the sweep instead, the ground would move particles that the sweep's
 // later particles had already answered, and the sweeps' fixed point would not be the rest
 // state (a grain resting at h = 1/60 s stood 10% taller with 20 sweeps).
+//
+// Each sweep ends with a step of every soft body as a whole (body_step): per-particle
+// Gauss–Seidel moves a body's particles one at a time against their tets, which hold them
+// within (m/h²)/k_tet ≈ 1e-3 of a translation per sweep, so a body pushed across the slope of
+// what holds it could hardly move. (A grain on a plane tilted past μ_s accelerated at 0.005
+// m/s², where g(sin θ − μ_k cos θ) is 1.29.) A translation δ of all of a body's particles
+// leaves its tets' terms unchanged (F, hence U and both dampings, are translation-invariant),
+// so its Newton step needs only inertia, springs and the contact terms:
+//
+//   (M_b/h² I + Σ_t A_t² ∇²ψ_t) δ = −(Σ_i m_i/h² (x_i − y_i) + Σ_i ∇springs + Σ_t A_t ∇ψ_t),
+//
+// A_t the sum of the term's weights on the body's corners; the step is halved until it does
+// not raise E. Bodies take it one after another, after the particles (taken before them, it
+// left a grain sliding down a plane hopping 0.6 mm, at 3% of its acceleration); it is skipped with a ground plane (whose
+// friction lives in the particles' steps) and for bodies with pinned or sleeping particles.
 //
 // The solver (solver.hpp) runs K sweeps per substep for Method::kVbd, updating the contacts'
 // forces after each.
@@ -73,6 +90,8 @@ class VertexBlockDescent {
     int tet;
     int k;  ///< the particle's corner in the tet, 0..3
   };
+  /// Soft body b's Newton step as a whole (see the file comment).
+  void body_step(Model& model, const Positions& y, int b, const ParticleContacts* contacts) const;
   /// One particle's Newton step.
   void solve_particle(Model& model, const Positions& y, int i, const ParticleContacts* contacts) const;
   /// The terms of E that involve particle i, with x_i at `xi` (up to constants).
@@ -88,6 +107,7 @@ class VertexBlockDescent {
   /// springs_[first_spring_[i] .. [i + 1]), indices into Model::attachments.
   std::vector<int> first_spring_, springs_;
   std::vector<Corner> corners_;
+  std::vector<int> soft_bodies_;  ///< Model::bodies that are soft
   Coloring coloring_;  ///< particles of tets grouped so that no two of a colour share a tet
   std::vector<Vec2> C_start_;
   std::vector<Mat3> F_start_;
