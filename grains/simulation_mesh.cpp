@@ -97,11 +97,22 @@ VolumeMesh mesh_once(const Polyhedron& polyhedron, const Size& size, double face
   const Criteria criteria(params::facet_angle = p.facet_angle_degrees, params::facet_size = size,
                           params::facet_distance = facet_distance,
                           params::cell_radius_edge_ratio = p.radius_edge_ratio, params::cell_size = size);
-  const Complex complex =
-      p.exude_sliver_degrees > 0.0
-          ? CGAL::make_mesh_3<Complex>(domain, criteria, params::no_perturb(),
-                                       params::exude(params::sliver_bound = p.exude_sliver_degrees))
-          : CGAL::make_mesh_3<Complex>(domain, criteria, params::no_perturb(), params::no_exude());
+  using Optimiser = SimulationMeshParameters::Optimiser;
+  const int iterations = p.optimiser_iterations;
+  // time_limit = 0: no limit, so the result depends on the seed alone.
+  const Complex complex = CGAL::make_mesh_3<Complex>(
+      domain, criteria,
+      p.optimiser == Optimiser::kOdt
+          ? params::odt(params::time_limit = 0, params::max_iteration_number = iterations)
+          : params::no_odt(),
+      p.optimiser == Optimiser::kLloyd
+          ? params::lloyd(params::time_limit = 0, params::max_iteration_number = iterations)
+          : params::no_lloyd(),
+      p.perturb_sliver_degrees > 0.0
+          ? params::perturb(params::time_limit = 0, params::sliver_bound = p.perturb_sliver_degrees)
+          : params::no_perturb(),
+      p.exude_sliver_degrees > 0.0 ? params::exude(params::time_limit = 0, params::sliver_bound = p.exude_sliver_degrees)
+                                   : params::no_exude());
   return from_complex(complex);
 }
 
@@ -123,6 +134,13 @@ void validate(const SimulationMeshParameters& p) {
           "in (0, 30] (Mesh_3 terminates for angles up to 30)");
   require(p.radius_edge_ratio >= 2.0, "radius_edge_ratio", ">= 2 (Mesh_3 terminates for ratios >= 2)");
   require(p.exude_sliver_degrees >= 0.0 && p.exude_sliver_degrees < 60.0, "exude_sliver_degrees", "in [0, 60)");
+  require(p.perturb_sliver_degrees >= 0.0 && p.perturb_sliver_degrees < 60.0, "perturb_sliver_degrees", "in [0, 60)");
+  require(p.optimiser_iterations >= 1 && p.optimiser_iterations <= 1000, "optimiser_iterations", "in [1, 1000]");
+}
+
+const char* optimiser_name(SimulationMeshParameters::Optimiser optimiser) {
+  using Optimiser = SimulationMeshParameters::Optimiser;
+  return optimiser == Optimiser::kOdt ? "odt" : optimiser == Optimiser::kLloyd ? "lloyd" : "none";
 }
 
 VolumeMesh make_simulation_mesh(const SurfaceMesh& surface, const SimulationMeshParameters& p, std::uint64_t seed) {

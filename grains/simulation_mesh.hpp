@@ -1,7 +1,10 @@
 // Low-resolution tetrahedral simulation mesh of a grain (paper §4.3: the dynamics run on a
 // coarse mesh, the render mesh rides on it), made by CGAL's Mesh_3 from the closed base
-// surface: Delaunay refinement to the size criteria below, then sliver exudation. Tets come
-// out positively oriented; none is inverted or flat (checked, and an error if violated).
+// surface: Delaunay refinement to the size criteria below, then, as chosen, a global
+// optimiser (ODT or Lloyd smoothing), sliver perturbation and sliver exudation. Tets come out
+// positively oriented; none is inverted or flat (checked, and an error if violated). Slivers
+// matter: XPBD's stable substep falls with a tet's smallest dihedral angle
+// (`rice study tet-quality`).
 #pragma once
 
 #include <cstdint>
@@ -23,8 +26,17 @@ struct SimulationMeshParameters {
   double facet_distance = 0.2;    ///< surface approximation error bound, fraction of T
   double facet_angle_degrees = 25.0;
   double radius_edge_ratio = 3.0;
-  double exude_sliver_degrees = 10.0;  ///< exudation target for the smallest dihedral angle
+  double exude_sliver_degrees = 10.0;  ///< exudation target for the smallest dihedral angle (0: off)
+  /// Mesh_3's global optimisers, run before perturbation and exudation, each for at most
+  /// `optimiser_iterations` iterations (no time limit, so the mesh is deterministic).
+  enum class Optimiser { kNone, kOdt, kLloyd };
+  Optimiser optimiser = Optimiser::kNone;
+  int optimiser_iterations = 50;
+  double perturb_sliver_degrees = 0.0;  ///< sliver perturbation target (0: off)
 };
+
+/// "none", "odt" or "lloyd".
+const char* optimiser_name(SimulationMeshParameters::Optimiser optimiser);
 
 /// Throws std::invalid_argument naming the parameter and its accepted range.
 void validate(const SimulationMeshParameters& parameters);

@@ -113,6 +113,7 @@ std::vector<ReproduceStep> reproduce_steps(const std::filesystem::path& out, boo
       {"Pour: penetration and time against substeps", {"study", "pour-substeps"}, "pour-substeps", "", {}},
       {"One grain: error and time against substeps, XPBD and VBD", {"study", "grain-substeps"}, "grain-substeps", "",
        {}},
+      {"Grain meshes: XPBD's stable substep against tet quality", {"study", "tet-quality"}, "tet-quality", "", {}},
       {"Contact: Hertz, a grain on the ground, two grains pressed together", {"study", "contact"}, "contact", "", {}},
       {"CDRF: the fit against the random-walk reference", {"study", "cdrf"}, "cdrf", "", {}},
       {"Fig. 10: a clump dropped after three soak times",

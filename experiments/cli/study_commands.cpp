@@ -11,6 +11,7 @@
 #include "experiments/studies/oscillator_study.hpp"
 #include "experiments/studies/pour_substep_study.hpp"
 #include "experiments/studies/render_study.hpp"
+#include "experiments/studies/tet_quality_study.hpp"
 #include "experiments/studies/xpbd_stiffness_study.hpp"
 
 namespace rice::experiments {
@@ -25,6 +26,7 @@ class StudyCommands : public CommandFamily {
     add_render(study);
     add_pour_substeps(study);
     add_grain_substeps(study);
+    add_tet_quality(study);
     add_contact(study);
     add_stiffness(study);
     add_oscillator(study);
@@ -108,6 +110,22 @@ class StudyCommands : public CommandFamily {
     c->add_option("--seed", s.seed, "grain seed")->check(seed_value())->capture_default_str();
     add(c, [this] { experiments::validate(grain_substeps_); },
         [this] { grain_substep_study_command(grain_substeps_, grain_substeps_out_); });
+  }
+
+  void add_tet_quality(CLI::App* study) {
+    CLI::App* c = study->add_subcommand(
+        "tet-quality", "grain simulation meshes by several Mesh_3 settings: smallest dihedral angle and XPBD's stable substep");
+    TetQualityStudySettings& s = tet_quality_;
+    c->add_option("--out", tet_quality_out_, "output folder")->capture_default_str();
+    c->add_option("--substeps", s.substeps, "substep counts per 1/60 s frame to search, increasing")
+        ->check(number_in(1, 1e4))->capture_default_str();
+    c->add_option("--seeds", s.seeds, "grain seeds")->check(seed_value())->capture_default_str();
+    c->add_option("--iterations", s.iterations, "XPBD iterations per substep")->check(number_in(1, 1000))
+        ->capture_default_str();
+    c->add_option("--frames", s.frames, "frames of 1/60 s")->check(number_in(1, 1e5))->capture_default_str();
+    c->add_option("--young", s.young, "Young's modulus [Pa]")->check(number_in(1, 1e12))->capture_default_str();
+    add(c, [this] { experiments::validate(tet_quality_); },
+        [this] { tet_quality_study_command(tet_quality_, tet_quality_out_); });
   }
 
   void add_contact(CLI::App* study) {
@@ -197,6 +215,8 @@ class StudyCommands : public CommandFamily {
   bool pour_substeps_no_cohesion_ = false;
   GrainSubstepStudySettings grain_substeps_;
   std::string grain_substeps_out_ = "out/grain-substeps";
+  TetQualityStudySettings tet_quality_;
+  std::string tet_quality_out_ = "out/tet-quality";
   ContactStudySettings contact_;
   std::string contact_out_ = "out/contact";
   bool contact_quick_ = false;

@@ -21,28 +21,16 @@
 #include "xpbd/solver.hpp"
 
 namespace rice::experiments {
-namespace {
 
-struct Run {
-  xpbd::Method method;
-  int substeps, iterations;
-  bool finite = true;
-  double fastest = 0.0;       ///< fastest particle at the end [m/s]
-  double volume_ratio = 0.0;  ///< smallest tet volume over its rest volume at the end
-  double wall = 0.0;          ///< [s per simulated second]
-  xpbd::Positions x;          ///< final positions
-  bool stable() const { return finite && volume_ratio > 0.0 && fastest < 1e-3; }
-};
-
-Run simulate(const grains::Grain& grain, const GrainSubstepStudySettings& s, xpbd::Method method, int substeps,
-             int iterations) {
+GrainRestRun simulate_grain_at_rest(const grains::Grain& grain, double young, int frames, xpbd::Method method,
+                                    int substeps, int iterations) {
   const xpbd::TetMesh mesh{grain.simulation.V, grain.simulation.T};
   xpbd::Model model;
   model.particles = xpbd::make_particles(mesh, grain.simulation_density);
-  xpbd::add_neo_hookean_tets(model, mesh, xpbd::lame_from_young_poisson(s.young, 0.3));
+  xpbd::add_neo_hookean_tets(model, mesh, xpbd::lame_from_young_poisson(young, 0.3));
   model.particles.x.col(2).array() -= model.particles.x.col(2).minCoeff();
   model.ground = xpbd::GroundPlane{.static_friction = 0.5, .dynamic_friction = 0.4};
-  Run run;
+  GrainRestRun run;
   run.method = method;
   run.substeps = substeps;
   run.iterations = iterations;
@@ -50,11 +38,11 @@ Run simulate(const grains::Grain& grain, const GrainSubstepStudySettings& s, xpb
                               .method = method, .execution = xpbd::Execution::kSerial});
   const auto start = std::chrono::steady_clock::now();
   try {
-    for (int f = 0; f < s.frames; ++f) solver.step();
+    for (int f = 0; f < frames; ++f) solver.step();
   } catch (const xpbd::SimulationError&) {
     run.finite = false;
   }
-  run.wall = seconds_since(start) / (s.frames / 60.0);
+  run.wall = seconds_since(start) / (frames / 60.0);
   run.x = model.particles.x;
   if (run.finite) {
     run.fastest = model.particles.v.rowwise().norm().maxCoeff();
@@ -63,8 +51,6 @@ Run simulate(const grains::Grain& grain, const GrainSubstepStudySettings& s, xpb
   }
   return run;
 }
-
-}  // namespace
 
 void validate(const GrainSubstepStudySettings& s) {
   if (s.substeps.empty() || (s.xpbd_iterations.empty() && s.vbd_iterations.empty()))
@@ -94,13 +80,13 @@ void grain_substep_study_command(const GrainSubstepStudySettings& s, const std::
     for (const int k : s.xpbd_iterations) jobs.push_back({xpbd::Method::kXpbd, n, k});
     for (const int k : s.vbd_iterations) jobs.push_back({xpbd::Method::kVbd, n, k});
   }
-  std::vector<Run> runs(jobs.size());
+  std::vector<GrainRestRun> runs(jobs.size());
   for_each_item("grain-substeps", static_cast<int>(jobs.size()), [&](int j) {
-    runs[j] = simulate(grain, s, jobs[j].method, jobs[j].substeps, jobs[j].iterations);
+    runs[j] = simulate_grain_at_rest(grain, s.young, s.frames, jobs[j].method, jobs[j].substeps, jobs[j].iterations);
   });
   // The finest vertex-block-descent run (most substeps, then most iterations) is the reference.
-  const Run* reference = nullptr;
-  for (const Run& r : runs)
+  const GrainRestRun* reference = nullptr;
+  for (const GrainRestRun& r : runs)
     if (r.method == xpbd::Method::kVbd && r.stable() &&
         (!reference || std::tie(r.substeps, r.iterations) > std::tie(reference->substeps, reference->iterations)))
       reference = &r;
@@ -110,7 +96,7 @@ void grain_substep_study_command(const GrainSubstepStudySettings& s, const std::
   std::printf("\n%-5s %5s %3s %10s %7s %11s %9s %11s %9s\n", "", "N", "K", "h [s]", "stable", "fastest", "min V/V0",
               "error/len", "wall [s/s]");
   int largest_stable[2] = {0, 0};  // fewest substeps that was stable, per method (xpbd, vbd)
-  for (const Run& r : runs) {
+  for (const GrainRestRun& r : runs) {
     const double error = reference && r.finite ? std::sqrt((r.x - reference->x).rowwise().squaredNorm().mean()) / length
                                                : std::numeric_limits<double>::quiet_NaN();
     table.add_row({xpbd::method_name(r.method), cell(r.substeps), cell(r.iterations), cell(1.0 / (60.0 * r.substeps)),

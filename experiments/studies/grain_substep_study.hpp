@@ -10,7 +10,27 @@
 #include <filesystem>
 #include <vector>
 
+#include "grains/grain_generator.hpp"
+#include "xpbd/solver.hpp"
+
 namespace rice::experiments {
+
+/// One run of the study: the grain set on the ground at rest and stepped.
+struct GrainRestRun {
+  xpbd::Method method;
+  int substeps, iterations;
+  bool finite = true;
+  double fastest = 0.0;       ///< fastest particle at the end [m/s]
+  double volume_ratio = 0.0;  ///< smallest tet volume over its rest volume at the end
+  double wall = 0.0;          ///< [s per simulated second]
+  xpbd::Positions x;          ///< final positions
+  bool stable() const { return finite && volume_ratio > 0.0 && fastest < 1e-3; }
+};
+
+/// `frames` frames of 1/60 s, N = `substeps` per frame, K = `iterations`, on one thread;
+/// E = `young`, ν = 0.3, ground friction 0.5 / 0.4.
+GrainRestRun simulate_grain_at_rest(const grains::Grain& grain, double young, int frames, xpbd::Method method,
+                                    int substeps, int iterations);
 
 struct GrainSubstepStudySettings {
   std::vector<int> substeps{1, 2, 5, 10, 20, 40, 80, 160, 320, 480};  ///< per 1/60 s frame

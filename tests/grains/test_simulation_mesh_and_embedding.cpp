@@ -47,6 +47,32 @@ TEST(SimulationMesh, DefaultsGiveTenToSixtyVerticesOfBoundedQuality) {
     }
 }
 
+TEST(SimulationMesh, OptimisersGiveValidDeterministicMeshesAndBadSettingsAreRefused) {
+  // ODT and Lloyd smoothing with sliver perturbation (`rice study tet-quality` compares them):
+  // positively oriented tets in the vertex range, the same mesh for the same seed.
+  using Optimiser = SimulationMeshParameters::Optimiser;
+  RandomStream random(4);
+  const SurfaceMesh base = make_base_shape(sample_grain_shape(cultivar_by_name("japonica"), random));
+  for (const Optimiser optimiser : {Optimiser::kOdt, Optimiser::kLloyd}) {
+    SimulationMeshParameters p;
+    p.optimiser = optimiser;
+    p.perturb_sliver_degrees = 10.0;
+    const VolumeMesh mesh = make_simulation_mesh(base, p, 4);
+    EXPECT_GE(mesh.V.rows(), p.min_vertices) << optimiser_name(optimiser);
+    EXPECT_LE(mesh.V.rows(), p.max_vertices) << optimiser_name(optimiser);
+    EXPECT_GT(measure_tet_quality(mesh).min_volume, 0.0) << optimiser_name(optimiser);
+    const VolumeMesh again = make_simulation_mesh(base, p, 4);
+    EXPECT_EQ(mesh.V, again.V) << optimiser_name(optimiser);
+    EXPECT_EQ(mesh.T, again.T) << optimiser_name(optimiser);
+  }
+  SimulationMeshParameters bad;
+  bad.perturb_sliver_degrees = 60.0;
+  EXPECT_THROW(validate(bad), std::invalid_argument);
+  bad = {};
+  bad.optimiser_iterations = 0;
+  EXPECT_THROW(validate(bad), std::invalid_argument);
+}
+
 TEST(SimulationMesh, GradedMeshIsFineWhereTheSizeFieldAsks) {
   RandomStream random(1);
   const SurfaceMesh base = make_base_shape(sample_grain_shape(cultivar_by_name("japonica"), random));

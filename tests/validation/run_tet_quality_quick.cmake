@@ -1,0 +1,27 @@
+# Runs `rice study tet-quality` on one grain seed and two substep counts into OUT and checks
+# that every mesh setting has a row with a stable substep count, and that the plot and run
+# info are there. Called by CTest (tests/CMakeLists.txt) with -DRICE=<rice binary> -DOUT=<folder>.
+file(REMOVE_RECURSE "${OUT}")
+execute_process(COMMAND "${RICE}" study tet-quality --seeds 3 --substeps 160 480 --frames 20 --out "${OUT}"
+                RESULT_VARIABLE result)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "rice study tet-quality exited with ${result}")
+endif()
+foreach(name tet_quality.csv tet_quality.png run_info.txt)
+  if(NOT EXISTS "${OUT}/${name}")
+    message(FATAL_ERROR "missing ${OUT}/${name}")
+  endif()
+endforeach()
+file(STRINGS "${OUT}/tet_quality.csv" rows)
+list(LENGTH rows count)
+if(NOT count EQUAL 6)
+  message(FATAL_ERROR "tet_quality.csv has ${count} lines, expected a header and 5 mesh settings")
+endif()
+list(REMOVE_AT rows 0)
+foreach(row IN LISTS rows)
+  string(REPLACE "," ";" cells "${row}")
+  list(GET cells 11 fewest)
+  if(fewest EQUAL 0)
+    message(FATAL_ERROR "no stable substep count in: ${row}")
+  endif()
+endforeach()
