@@ -39,6 +39,7 @@ void CohesionBonds::begin_substep(const Model& model, const std::vector<Touch>& 
 void CohesionBonds::hold_in_particle_steps(const Model& model, ParticleContacts& terms) {
   const double compliance = model.contact.bond_compliance;
   if (!(compliance > 0.0)) return;  // a hard bond has no spring constant: it stays a projection
+  // k = min(1/α, the particle terms' k): see particle_contacts.hpp.
   for (Bond& bond : bonds_) {
     const Body& a = model.bodies[bond.key[0]];
     const Body& b = model.bodies[bond.key[1]];
@@ -54,7 +55,7 @@ void CohesionBonds::hold_in_particle_steps(const Model& model, ParticleContacts&
     add_sphere(b, bond.key[3], -1.0);
     term.offset = bond.anchor_a - bond.anchor_b;  // soft material coordinates: offsets from the centres
     term.length = bond.length;
-    term.stiffness = 1.0 / compliance;
+    term.stiffness = std::min(1.0 / compliance, model.contact.particle_stiffness);
     bond.held = static_cast<int>(terms.bonds().size());
     terms.add(term);
   }

@@ -39,7 +39,8 @@ class CohesionBonds {
   /// the multipliers. `x_previous`: the particle positions at the substep's start.
   void begin_substep(const Model& model, const std::vector<Touch>& touches, const Positions& x_previous);
   /// Adds every bond between two soft bodies, not both asleep, to `terms` as a spring of
-  /// stiffness 1/α (α > 0); project() then skips them. Call after begin_substep.
+  /// stiffness min(1/α, ContactSettings::particle_stiffness) (α > 0); project() then skips
+  /// them. Call after begin_substep.
   void hold_in_particle_steps(const Model& model, ParticleContacts& terms);
   /// After the sweeps: each held bond's impulse λ = −k* C_b h² at x, for end_substep.
   void take_particle_forces(const ParticleContacts& terms, const Positions& x, double h);

@@ -86,7 +86,9 @@ struct ContactSettings {
   double broad_phase_interval = 5e-3;
   /// Cohesive bonds between bodies with bond_strength > 0 (cohesion_bonds.hpp); off costs nothing.
   bool cohesion = false;
-  double bond_compliance = 1e-4;  ///< α of a bond [m/N]: 1e-4 stretches 1 µm under 10 mN
+  /// α of a bond [m/N]: 1e-4 stretches 1 µm under 10 mN. Under vertex block descent a bond
+  /// between soft bodies is a spring no stiffer than particle_stiffness (particle_contacts.hpp).
+  double bond_compliance = 1e-4;
   /// Two spheres closer than this [m] form a bond (1% of a grain's thickness), when they are
   /// a contact too (their gap within the margin and their motion).
   double bond_distance = 2e-5;

@@ -39,15 +39,18 @@
 // slide in the next substep (μ = μ_k) when all of them did, else stick (μ = μ_s). A fixed
 // point inside the cone has s = 0: a sticking contact does not creep.
 //
-// Bond. A cohesive bond (cohesion_bonds.hpp) with compliance α is a spring of stiffness
-// k* = 1/α between two anchors d(x) = L(x) + e (e the anchors' offsets from their spheres'
-// centres) that only pulls:
+// Bond. A cohesive bond (cohesion_bonds.hpp) is a spring of stiffness k* between two anchors
+// d(x) = L(x) + e (e the anchors' offsets from their spheres' centres) that only pulls:
 //
 //   C_b = |d| − d₀,   ψ_b = ½ k* max(0, C_b)²,   ∇_{x_j} ψ_b = a_j k* C_b d̂,
 //   ∇²_{x_j} ψ_b = a_j² k* (d̂ d̂ᵀ + C_b/|d| (I − d̂ d̂ᵀ))   where C_b > 0.
 //
-// AVBD would ramp k towards k*; a bond's k* (1e4 N/m by default) is its own spring constant, so
-// it is used from the start, with no multiplier. Its force k* C_b is what breaks it.
+// k* = min(1/α, k), the bond's own spring constant capped at the contacts' k, with no
+// multiplier (AVBD caps a finite stiffness the same way, though it ramps towards it). Its force
+// k* C_b is what breaks it. (At 1/α = 1e4 N/m, a period of 0.1 ms against steps of 3–17 ms,
+// grains rang on their bonds under 5–10 sweeps: bonds broke at 29% of their strength, a
+// resting sticky pile stayed awake at 1e-8 J, and a 100-grain sticky pour had 4504 pair
+// breaks. Capped at 300 N/m: 2052 breaks, and the pile sleeps by 5.5 s.)
 #pragma once
 
 #include <algorithm>

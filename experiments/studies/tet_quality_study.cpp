@@ -58,7 +58,7 @@ std::vector<MeshSetting> mesh_settings() {
 
 struct Row {
   std::string setting;
-  unsigned seed = 0;
+  std::uint64_t seed = 0;
   long vertices = 0, tets = 0;
   grains::TetQuality quality;
   double min_edge = 0.0, mean_edge = 0.0;  ///< [m]
@@ -66,7 +66,7 @@ struct Row {
   double wall = 0.0;      ///< at that count [s per simulated second]
 };
 
-Row measure(const MeshSetting& setting, unsigned seed, const TetQualityStudySettings& s) {
+Row measure(const MeshSetting& setting, std::uint64_t seed, const TetQualityStudySettings& s) {
   grains::GrainRecipe recipe;
   recipe.cultivar = grains::cultivar_by_name("japonica");
   recipe.simulation = setting.parameters;
@@ -134,12 +134,12 @@ void tet_quality_study_command(const TetQualityStudySettings& s, const std::file
   std::printf("\n%-30s %4s %5s %5s %9s %9s %9s %8s %8s\n", "mesh", "seed", "verts", "tets", "min dih", "max r/e",
               "N wave", "N stable", "wall s/s");
   for (const Row& r : rows) {
-    table.add_row({r.setting, cell(static_cast<long>(r.seed)), cell(r.vertices), cell(r.tets),
+    table.add_row({r.setting, std::to_string(r.seed), cell(r.vertices), cell(r.tets),
                    cell(r.quality.min_volume), cell(r.quality.min_dihedral_degrees),
                    cell(r.quality.max_dihedral_degrees), cell(r.quality.max_radius_edge_ratio), cell(r.min_edge),
                    cell(r.mean_edge), cell(std::ceil(wave_speed / (60.0 * r.mean_edge))), cell(r.fewest_stable),
                    cell(r.fewest_stable ? 1.0 / (60.0 * r.fewest_stable) : 0.0), cell(r.wall)});
-    std::printf("%-30s %4u %5ld %5ld %9.2f %9.2f %9.0f %8s %8.3f\n", r.setting.c_str(), r.seed, r.vertices, r.tets,
+    std::printf("%-30s %4llu %5ld %5ld %9.2f %9.2f %9.0f %8s %8.3f\n", r.setting.c_str(), static_cast<unsigned long long>(r.seed), r.vertices, r.tets,
                 r.quality.min_dihedral_degrees, r.quality.max_radius_edge_ratio,
                 std::ceil(wave_speed / (60.0 * r.mean_edge)),
                 r.fewest_stable ? std::to_string(r.fewest_stable).c_str() : "none", r.wall);

@@ -9,6 +9,7 @@
 // and run_info.txt.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <vector>
 
@@ -16,7 +17,7 @@ namespace rice::experiments {
 
 struct TetQualityStudySettings {
   std::vector<int> substeps{20, 40, 60, 80, 120, 160, 240, 320, 480, 640};  ///< searched, increasing
-  std::vector<unsigned> seeds{3, 4, 5};  ///< of the grains
+  std::vector<std::uint64_t> seeds{3, 4, 5};  ///< of the grains
   int iterations = 5;  ///< XPBD's K
   int frames = 60;
   double young = 1e5;  ///< [Pa]
