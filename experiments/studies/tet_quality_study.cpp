@@ -95,6 +95,8 @@ Row measure(const MeshSetting& setting, std::uint64_t seed, const TetQualityStud
 
 void write_plot(const std::filesystem::path& folder) {
   render_plot(folder, "tet_quality", csv_plot_header("tet_quality", 1100, 650) + R"(set logscale y
+set xrange [0:30]
+set yrange [10:2000]
 set xlabel "smallest dihedral angle of the grain's simulation mesh [deg]"
 set ylabel 'fewest substeps per 1/60 s frame at which XPBD keeps it at rest'
 set title 'XPBD stable substep against tet quality (japonica grains, E = 100 kPa, K = 5)' noenhanced
