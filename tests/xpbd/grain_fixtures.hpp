@@ -71,4 +71,12 @@ inline Collider half_space(const Vec3& normal, double offset, double mu_s, doubl
   return c;
 }
 
+/// A square box open at the top, 2 × `half_width` across: a floor at z = 0 (μ_s 0.5, μ_k 0.4)
+/// and four walls (0.3, 0.2), as colliders.
+inline void add_open_box(Model& model, double half_width) {
+  model.colliders.push_back(half_space(Vec3::UnitZ(), 0.0, 0.5, 0.4));
+  for (const Vec3& n : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0)})
+    model.colliders.push_back(half_space(n, -half_width, 0.3, 0.2));
+}
+
 }  // namespace rice::xpbd::testing

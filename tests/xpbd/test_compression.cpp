@@ -32,9 +32,7 @@ Model boxed_grains() {
   Model model;
   model.contact.static_friction = 0.5;
   model.contact.dynamic_friction = 0.4;
-  model.colliders.push_back(half_space(Vec3::UnitZ(), 0.0, 0.5, 0.4));
-  for (const Vec3& n : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0)})
-    model.colliders.push_back(half_space(n, -kHalfWidth, 0.3, 0.2));
+  add_open_box(model, kHalfWidth);
   for (int k = 0; k < 500; ++k) {
     const int layer = k / 40, i = k % 4, j = (k / 4) % 10;
     const Vec3 corner(-0.0165 + 0.0085 * i + 4e-4 * (layer % 2), -0.0175 + 0.0035 * j, 2e-4 + 0.0025 * layer);

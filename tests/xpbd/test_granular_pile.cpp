@@ -24,9 +24,7 @@ Model poured_grains(bool sleeping) {
   model.contact.static_friction = 0.5;
   model.contact.dynamic_friction = 0.4;
   model.sleep.enabled = sleeping;
-  model.colliders.push_back(half_space(Vec3::UnitZ(), 0.0, 0.5, 0.4));
-  for (const Vec3& n : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0)})
-    model.colliders.push_back(half_space(n, -kBoxHalfWidth, 0.3, 0.2));
+  add_open_box(model, kBoxHalfWidth);
   for (int k = 0; k < 200; ++k) {
         const int layer = k / 16, i = k % 4, j = (k / 4) % 4;
         const Vec3 centre(-0.01125 + 0.0075 * i, -0.01125 + 0.0075 * j, 0.004 + 0.006 * layer);

@@ -33,9 +33,7 @@ Model sticky_soft_grains() {
   model.contact.dynamic_friction = 0.4;
   model.contact.cohesion = true;
   model.sleep.enabled = true;
-  model.colliders.push_back(half_space(Vec3::UnitZ(), 0.0, 0.5, 0.4));
-  for (const Vec3& n : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0)})
-    model.colliders.push_back(half_space(n, -kBoxHalfWidth, 0.3, 0.2));
+  add_open_box(model, kBoxHalfWidth);
   const double weight = kGrainDensity * kGrainLength * kGrainWidth * kGrainThickness * 9.81;
   for (int k = 0; k < 100; ++k) {
     const int layer = k / 16, i = k % 4, j = (k / 4) % 4;
