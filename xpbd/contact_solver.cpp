@@ -76,11 +76,33 @@ void ContactSolver::find_candidates(double time, double span) {
     if (body_a.asleep && !body_b.asleep && body_b.moving) wake(body_a);
     if (body_b.asleep && !body_a.asleep && body_a.moving) wake(body_b);
   }
+  sphere_pairs_.clear();
+  std::vector<BodyPair> found = body_candidates(pairs, pad);
+  add_collider_candidates(time, span, pad, found);
+  // In key order: by body a, then b (colliders, with negative keys, first).
+  std::sort(found.begin(), found.end(), [](const BodyPair& x, const BodyPair& y) {
+    return std::pair(x.a, x.b) < std::pair(y.a, y.b);
+  });
+  body_pairs_ = std::move(found);
+  keep_states_in_reach();
+  statistics_.candidates = 0;
+  active_bodies_.clear();
+  for (const BodyPair& p : body_pairs_) {
+    statistics_.candidates += p.last - p.first;
+    active_bodies_.push_back(p.a);
+    if (!is_collider(p.b)) active_bodies_.push_back(p.b);
+  }
+  std::sort(active_bodies_.begin(), active_bodies_.end());
+  active_bodies_.erase(std::unique(active_bodies_.begin(), active_bodies_.end()), active_bodies_.end());
+}
+
+std::vector<ContactSolver::BodyPair> ContactSolver::body_candidates(const std::vector<std::pair<int, int>>& pairs,
+                                                                    const std::vector<double>& pad) {
   // Candidate sphere pairs of each body pair: spheres that reach the other body's box, paired
   // when their gap is within reach (a grain's 20–60 spheres make 400–3600 pairs, of which a
   // touching neighbour needs a few dozen).
+  const auto& bodies = model_.bodies;
   std::vector<BodyPair> found;
-  sphere_pairs_.clear();
   std::vector<int> near_a, near_b;
   const auto spheres_near = [&](int body, const Box& other, double reach, std::vector<int>& near) {
     near.clear();
@@ -104,6 +126,12 @@ void ContactSolver::find_candidates(double time, double span) {
     const int last = static_cast<int>(sphere_pairs_.size());
     if (last > first) found.push_back({a, b, first, last});
   }
+  return found;
+}
+
+void ContactSolver::add_collider_candidates(double time, double span, const std::vector<double>& pad,
+                                            std::vector<BodyPair>& found) {
+  const auto& bodies = model_.bodies;
   for (size_t c = 0; c < model_.colliders.size(); ++c) {
     const Collider& collider = model_.colliders[c];
     if (!collider_present(collider, time)) continue;
@@ -126,11 +154,9 @@ void ContactSolver::find_candidates(double time, double span) {
       if (bodies[b].asleep) wake(model_.bodies[b]);  // a moving collider reaches it
     }
   }
-  // In key order: by body a, then b (colliders, with negative keys, first).
-  std::sort(found.begin(), found.end(), [](const BodyPair& x, const BodyPair& y) {
-    return std::pair(x.a, x.b) < std::pair(y.a, y.b);
-  });
-  body_pairs_ = std::move(found);
+}
+
+void ContactSolver::keep_states_in_reach() {
   // The contact states of pairs that stay in reach carry over, with their interval sums reset.
   std::vector<ContactState> kept;
   auto pair = body_pairs_.begin();
@@ -143,15 +169,6 @@ void ContactSolver::find_candidates(double time, double span) {
     kept.push_back(state);
   }
   states_ = std::move(kept);
-  statistics_.candidates = 0;
-  active_bodies_.clear();
-  for (const BodyPair& p : body_pairs_) {
-    statistics_.candidates += p.last - p.first;
-    active_bodies_.push_back(p.a);
-    if (!is_collider(p.b)) active_bodies_.push_back(p.b);
-  }
-  std::sort(active_bodies_.begin(), active_bodies_.end());
-  active_bodies_.erase(std::unique(active_bodies_.begin(), active_bodies_.end()), active_bodies_.end());
 }
 
 template <class Function>
@@ -321,7 +338,6 @@ ParticleContact ContactSolver::make_particle_contact(const Contact& contact, con
     c.slip_origin = c.point.at(x_previous) + collider_motion;
     // The last substep's friction force, in this substep's tangent plane.
     c.friction_force = state.friction_force - c.normal.dot(state.friction_force) * c.normal;
-    c.sliding = state.sliding;
   }
   return c;
 }
