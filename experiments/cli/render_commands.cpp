@@ -22,10 +22,12 @@ class RenderCommands : public CommandFamily {
  private:
   void add_inputs_and_image(CLI::App* c) {
     c->add_option("--meshes", meshes_, "mesh files (PLY, OBJ), or folders of them");
-    c->add_option("--run", run_, "or: the output folder of a scene run of rigid grains (rice run)");
+    c->add_option("--run", run_, "or: the output folder of a scene run (rice run)");
     c->add_option("--frame", render_.frame, "the run's frame (0: the last)")->check(number_in(0, 1e6))
         ->capture_default_str();
     c->add_flag("--every-frame", render_.every_frame, "every frame of the run into frame_NNNN.png, framed as the last");
+    c->add_flag("--deformed-curvature", deformed_curvature_,
+                "soft grains shaded with the curvature of their deformed meshes (default: their rest curvature)");
     c->add_option("--out", out_, "output folder")->capture_default_str();
     c->add_option("--absorption", render_.absorption_percent, "water absorption W [%]: sigma0 and albedo")
         ->check(number_in(0, 100))->capture_default_str();
@@ -82,6 +84,7 @@ class RenderCommands : public CommandFamily {
     s.render.ambient_occlusion = !no_ao_;
     s.ground = !no_ground_;
     s.side_by_side = side_by_side_;
+    s.soft_curvature = deformed_curvature_ ? SoftCurvature::kDeformed : SoftCurvature::kRest;
     s.sky_image = sky_image_;
     for (size_t k = 0; k + 10 <= area_.size(); k += 10) {
       const auto& a = area_;
@@ -107,7 +110,7 @@ class RenderCommands : public CommandFamily {
   std::vector<std::string> meshes_;
   std::vector<double> eye_, look_at_, area_;
   double fov_ = 30.0, aperture_ = 0.0, focus_ = 0.0;
-  bool no_shadows_ = false, no_ao_ = false, no_ground_ = false, side_by_side_ = false;
+  bool no_shadows_ = false, no_ao_ = false, no_ground_ = false, side_by_side_ = false, deformed_curvature_ = false;
 };
 
 }  // namespace

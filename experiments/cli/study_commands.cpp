@@ -11,6 +11,7 @@
 #include "experiments/studies/oscillator_study.hpp"
 #include "experiments/studies/pour_substep_study.hpp"
 #include "experiments/studies/render_study.hpp"
+#include "experiments/studies/soft_curvature_study.hpp"
 #include "experiments/studies/tet_quality_study.hpp"
 #include "experiments/studies/xpbd_stiffness_study.hpp"
 
@@ -24,6 +25,7 @@ class StudyCommands : public CommandFamily {
     study->require_subcommand(1);
     add_cdrf(study);
     add_render(study);
+    add_soft_curvature(study);
     add_pour_substeps(study);
     add_grain_substeps(study);
     add_tet_quality(study);
@@ -69,6 +71,20 @@ class StudyCommands : public CommandFamily {
         ->check(number_in(1, 65536))->capture_default_str();
     c->add_option("--seed", s.seed, "random seed")->check(seed_value())->capture_default_str();
     add(c, [this] { experiments::validate(render_); }, [this] { render_study_command(render_, render_out_); });
+  }
+
+  void add_soft_curvature(CLI::App* study) {
+    CLI::App* c = study->add_subcommand(
+        "soft-curvature", "a soft run's frame: rest against recomputed curvature of the deformed grains, error and time");
+    SoftCurvatureStudySettings& s = soft_curvature_;
+    c->add_option("--run", s.run, "a soft scene run's output folder (rice run)")->required();
+    c->add_option("--frame", s.frame, "the run's frame (0: the last)")->check(number_in(0, 1e6))->capture_default_str();
+    c->add_option("--out", soft_curvature_out_, "output folder")->capture_default_str();
+    c->add_option("--width", s.width, "pixels")->check(number_in(8, 4096))->capture_default_str();
+    c->add_option("--height", s.height, "pixels")->check(number_in(8, 4096))->capture_default_str();
+    c->add_option("--spp", s.samples_per_pixel, "samples per pixel")->check(number_in(1, 65536))->capture_default_str();
+    add(c, [this] { experiments::validate(soft_curvature_); },
+        [this] { soft_curvature_study_command(soft_curvature_, soft_curvature_out_); });
   }
 
   void add_pour_substeps(CLI::App* study) {
@@ -210,6 +226,8 @@ class StudyCommands : public CommandFamily {
   std::string cdrf_out_ = "out/cdrf";
   RenderStudySettings render_;
   std::string render_out_ = "out/render-study";
+  SoftCurvatureStudySettings soft_curvature_;
+  std::string soft_curvature_out_ = "out/soft-curvature";
   PourSubstepStudySettings pour_substeps_;
   std::string pour_substeps_out_ = "out/pour-substeps", pour_substeps_body_ = "rigid";
   bool pour_substeps_no_cohesion_ = false;

@@ -138,7 +138,7 @@ void render_image(const RenderCommandSettings& s, const RenderInputs& in, int k,
   shading::RenderScene scene;
   Eigen::AlignedBox3d grains_box;
   if (!s.run.empty()) {
-    add_run_grains(scene, s.run, in.variants, in.frames[k], grains_box);
+    add_run_grains(scene, s.run, in.variants, in.frames[k], grains_box, s.soft_curvature);
   } else {
     add_mesh_files(scene, in.files, s.side_by_side, grains_box);
   }

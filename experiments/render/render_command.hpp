@@ -1,6 +1,7 @@
 // `rice render`: renders grain meshes (the PLY/OBJ files of `rice grains`, or any closed
-// meshes) or a frame of a scene run of rigid grains (`rice run`: its grains instanced from its
-// variants, run_frames.hpp, and its chawan, glazed) as cooked rice with the CDRF (paper §4.4),
+// meshes) or a frame of a scene run (`rice run`: its rigid grains instanced from its variants,
+// its soft grains' render meshes carried by their simulation meshes, run_frames.hpp, and its
+// chawan, glazed) as cooked rice with the CDRF (paper §4.4),
 // on an optional ground, under a sun and a uniform or image sky, from a camera given on the
 // command line or framed automatically.
 // Writes render.png (tone mapped), render.exr (linear) — frame_NNNN.png and .exr for every
@@ -12,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "experiments/render/run_frames.hpp"
 #include "shading/camera.hpp"
 #include "shading/lights.hpp"
 #include "shading/material.hpp"
@@ -21,7 +23,7 @@ namespace rice::experiments {
 
 struct RenderCommandSettings {
   std::vector<std::filesystem::path> meshes;  ///< files, or folders whose .ply/.obj files are read
-  std::filesystem::path run;                  ///< or: the output folder of a scene run of rigid grains
+  std::filesystem::path run;                  ///< or: the output folder of a scene run
   int frame = 0;                              ///< of the run; 0: its last
   double absorption_percent = 20.0;           ///< water absorption W: σ0 and albedo of the CDRF
   shading::RenderSettings render;
@@ -38,6 +40,8 @@ struct RenderCommandSettings {
   /// A run's every frame, into frame_NNNN.png and .exr, with one camera: the given one or the
   /// last frame's framing. The variants' curvature and the CDRF table are made once.
   bool every_frame = false;
+  /// What a soft run's deformed grains are shaded with (docs/rendering.md measures both).
+  SoftCurvature soft_curvature = SoftCurvature::kRest;
 };
 
 /// Throws std::invalid_argument naming the setting that is out of range or the file missing.

@@ -7,6 +7,7 @@
 
 #include "experiments/io/numeric_csv.hpp"
 #include "experiments/io/progress.hpp"
+#include "grains/embedding.hpp"
 #include "grains/mesh_io.hpp"
 #include "shading/curvature.hpp"
 
@@ -30,54 +31,142 @@ std::vector<std::filesystem::path> run_frames(const std::filesystem::path& run) 
 RunVariants read_run_variants(const std::filesystem::path& run) {
   RunVariants variants;
   for (int k = 0;; ++k) {
-    const auto path = run / "variants" / ("variant_" + std::to_string(k) + ".ply");
+    auto path = run / "variants" / ("variant_" + std::to_string(k) + ".ply");
     if (!std::filesystem::exists(path)) break;
     variants.meshes.push_back(grains::read_surface_mesh(path));
+    if (std::filesystem::exists(path.replace_extension(".mesh"))) variants.simulation.push_back(grains::read_medit(path));
   }
-  Progress progress("render: variants and curvature", static_cast<int>(variants.meshes.size()));
+  if (!variants.simulation.empty() && variants.simulation.size() != variants.meshes.size())
+    throw std::runtime_error("render: " + (run / "variants").string() + " holds simulation meshes for " +
+                             std::to_string(variants.simulation.size()) + " of its " +
+                             std::to_string(variants.meshes.size()) + " variants");
+  Progress progress("render: variants, curvature and embeddings", static_cast<int>(variants.meshes.size()));
   for (size_t k = 0; k < variants.meshes.size(); ++k) {
     variants.curvature.push_back(shading::vertex_mean_curvature(variants.meshes[k].V, variants.meshes[k].F));
+    if (!variants.simulation.empty())
+      variants.embedding.push_back(grains::embed_points(variants.meshes[k].V, variants.simulation[k]));
     progress.update(static_cast<int>(k + 1));
   }
   progress.finish();
   return variants;
 }
 
-void add_run_grains(shading::RenderScene& scene, const std::filesystem::path& run, const RunVariants& variants,
-                    const std::filesystem::path& frame, Eigen::AlignedBox3d& box) {
-  const NumericCsv grains_csv = read_numeric_csv(run / "grains.csv");
-  const NumericCsv poses = read_numeric_csv(frame);
-  if (poses.columns.size() < 2 || poses.columns[1] != "x")
-    throw std::runtime_error("render: " + frame.string() + " holds soft-body vertices; only rigid runs are rendered");
-  if (poses.rows.size() != grains_csv.rows.size())
-    throw std::runtime_error("render: " + frame.string() + " has " + std::to_string(poses.rows.size()) +
+namespace {
+
+double value(const NumericCsv& csv, const std::vector<double>& row, const char* name) { return row[csv.column(name)]; }
+
+/// Grain g's variant (grains.csv), checked against the variants read.
+int variant_of(const NumericCsv& grains_csv, size_t g, const RunVariants& variants) {
+  const int variant = static_cast<int>(value(grains_csv, grains_csv.rows[g], "variant"));
+  if (variant < 0 || variant >= static_cast<int>(variants.meshes.size()))
+    throw std::runtime_error("render: " + grains_csv.path.string() + ": grain " + std::to_string(g) + " names variant " +
+                             std::to_string(variant) + " of " + std::to_string(variants.meshes.size()));
+  return variant;
+}
+
+/// False for a row of a grain still parked far away.
+bool in_scene(const NumericCsv& frame, const std::vector<double>& row) {
+  const bool marked = std::find(frame.columns.begin(), frame.columns.end(), "in_scene") != frame.columns.end();
+  return !marked || value(frame, row, "in_scene") != 0.0;
+}
+
+void grow(Eigen::AlignedBox3d& box, const grains::Vertices& V, const Eigen::Affine3d& place) {
+  for (Eigen::Index v = 0; v < V.rows(); v += 16) box.extend(place * V.row(v).transpose());
+}
+
+/// One row per grain: pose (c, q), the render mesh at c + q (drop + P R p − c₀).
+void add_rigid_grains(shading::RenderScene& scene, const NumericCsv& grains_csv, const NumericCsv& frame,
+                      const RunVariants& variants, Eigen::AlignedBox3d& box) {
+  if (frame.rows.size() != grains_csv.rows.size())
+    throw std::runtime_error("render: " + frame.path.string() + " has " + std::to_string(frame.rows.size()) +
                              " grains, grains.csv " + std::to_string(grains_csv.rows.size()));
   std::vector<int> prototype;
   for (size_t k = 0; k < variants.meshes.size(); ++k)
     prototype.push_back(scene.add_prototype(variants.meshes[k].V, variants.meshes[k].F, variants.curvature[k]));
-  const auto col = [&](const NumericCsv& csv, const std::vector<double>& row, const char* name) {
-    return row[csv.column(name)];
-  };
-  const bool marked = std::find(poses.columns.begin(), poses.columns.end(), "in_scene") != poses.columns.end();
   for (size_t g = 0; g < grains_csv.rows.size(); ++g) {
     const auto& a = grains_csv.rows[g];
-    const auto& b = poses.rows[g];
-    if (marked && col(poses, b, "in_scene") == 0.0) continue;  // still parked far away
-    const int variant = static_cast<int>(col(grains_csv, a, "variant"));
-    if (variant < 0 || variant >= static_cast<int>(prototype.size()))
-      throw std::runtime_error("render: " + (run / "grains.csv").string() + ": grain " + std::to_string(g) +
-                               " names variant " + std::to_string(variant) + " of " + std::to_string(prototype.size()));
-    const Eigen::Quaterniond R(col(grains_csv, a, "qw"), col(grains_csv, a, "qx"), col(grains_csv, a, "qy"),
-                               col(grains_csv, a, "qz"));
-    const Eigen::Quaterniond q(col(poses, b, "qw"), col(poses, b, "qx"), col(poses, b, "qy"), col(poses, b, "qz"));
-    const Eigen::Vector3d drop(col(grains_csv, a, "drop_x"), col(grains_csv, a, "drop_y"), col(grains_csv, a, "drop_z"));
-    const Eigen::Vector3d c0(col(grains_csv, a, "centre_x"), col(grains_csv, a, "centre_y"), col(grains_csv, a, "centre_z"));
-    const Eigen::Vector3d c(col(poses, b, "x"), col(poses, b, "y"), col(poses, b, "z"));
+    const auto& b = frame.rows[g];
+    const int variant = variant_of(grains_csv, g, variants);
+    if (!in_scene(frame, b)) continue;
+    const Eigen::Quaterniond R(value(grains_csv, a, "qw"), value(grains_csv, a, "qx"), value(grains_csv, a, "qy"),
+                               value(grains_csv, a, "qz"));
+    const Eigen::Quaterniond q(value(frame, b, "qw"), value(frame, b, "qx"), value(frame, b, "qy"), value(frame, b, "qz"));
+    const Eigen::Vector3d drop(value(grains_csv, a, "drop_x"), value(grains_csv, a, "drop_y"), value(grains_csv, a, "drop_z"));
+    const Eigen::Vector3d c0(value(grains_csv, a, "centre_x"), value(grains_csv, a, "centre_y"), value(grains_csv, a, "centre_z"));
+    const Eigen::Vector3d c(value(frame, b, "x"), value(frame, b, "y"), value(frame, b, "z"));
     const Eigen::Affine3d place = Eigen::Translation3d(c) * q.normalized() * Eigen::Translation3d(drop - c0) *
-                                  R.normalized() * Eigen::Scaling(col(grains_csv, a, "swell"));
+                                  R.normalized() * Eigen::Scaling(value(grains_csv, a, "swell"));
     scene.add_instance(prototype[variant], place, 0);
-    const auto& V = variants.meshes[variant].V;
-    for (Eigen::Index v = 0; v < V.rows(); v += 16) box.extend(place * V.row(v).transpose());
+    grow(box, variants.meshes[variant].V, place);
+  }
+}
+
+/// Grain g's simulation vertices: the frame's rows from `row` on, which it moves past them.
+grains::Vertices simulation_vertices(const NumericCsv& frame, size_t g, Eigen::Index count, size_t& row) {
+  if (row + count > frame.rows.size())
+    throw std::runtime_error("render: " + frame.path.string() + " ends before grain " + std::to_string(g) +
+                             "'s " + std::to_string(count) + " simulation vertices");
+  const int grain = frame.column("grain"), vertex = frame.column("vertex");
+  const int x = frame.column("x"), y = frame.column("y"), z = frame.column("z");
+  grains::Vertices V(count, 3);
+  for (Eigen::Index v = 0; v < count; ++v, ++row) {
+    const auto& r = frame.rows[row];
+    if (r[grain] != static_cast<double>(g) || r[vertex] != static_cast<double>(v))
+      throw std::runtime_error("render: " + frame.path.string() + ": row " + std::to_string(row + 1) +
+                               " is not grain " + std::to_string(g) + "'s vertex " + std::to_string(v) +
+                               " (its variant's simulation mesh has " + std::to_string(count) + ")");
+    V.row(v) << r[x], r[y], r[z];
+  }
+  return V;
+}
+
+/// Each soft grain its own mesh, shaded with `curvature`.
+void add_soft_grains(shading::RenderScene& scene, const NumericCsv& grains_csv, const NumericCsv& frame,
+                     const RunVariants& variants, SoftCurvature curvature, Eigen::AlignedBox3d& box) {
+  for (const SoftGrain& grain : soft_run_grains(grains_csv, frame, variants)) {
+    const Eigen::VectorXd H = curvature == SoftCurvature::kRest
+                                  ? Eigen::VectorXd(variants.curvature[grain.variant] / grain.swell)
+                                  : shading::vertex_mean_curvature(grain.mesh.V, grain.mesh.F);
+    scene.add_instance(scene.add_prototype(grain.mesh.V, grain.mesh.F, H), Eigen::Affine3d::Identity(), 0);
+    grow(box, grain.mesh.V, Eigen::Affine3d::Identity());
+  }
+}
+
+}  // namespace
+
+std::vector<SoftGrain> soft_run_grains(const NumericCsv& grains_csv, const NumericCsv& frame,
+                                       const RunVariants& variants) {
+  if (variants.simulation.empty())
+    throw std::runtime_error("render: " + frame.path.string() +
+                             " holds soft grains' vertices, and the run's variants/ no simulation meshes (.mesh)");
+  std::vector<SoftGrain> grains;
+  size_t row = 0;
+  for (size_t g = 0; g < grains_csv.rows.size(); ++g) {
+    const int variant = variant_of(grains_csv, g, variants);
+    const grains::VolumeMesh& simulation = variants.simulation[variant];
+    const grains::Vertices x = simulation_vertices(frame, g, simulation.V.rows(), row);
+    if (!in_scene(frame, frame.rows[row - 1])) continue;
+    grains.push_back({.grain = static_cast<int>(g),
+                      .variant = variant,
+                      .swell = value(grains_csv, grains_csv.rows[g], "swell"),
+                      .mesh = {grains::apply_embedding(variants.embedding[variant], x, simulation.T),
+                               variants.meshes[variant].F}});
+  }
+  if (row != frame.rows.size())
+    throw std::runtime_error("render: " + frame.path.string() + " has " + std::to_string(frame.rows.size() - row) +
+                             " rows past the last grain's vertices");
+  return grains;
+}
+
+void add_run_grains(shading::RenderScene& scene, const std::filesystem::path& run, const RunVariants& variants,
+                    const std::filesystem::path& frame, Eigen::AlignedBox3d& box, SoftCurvature curvature) {
+  const NumericCsv grains_csv = read_numeric_csv(run / "grains.csv");
+  const NumericCsv poses = read_numeric_csv(frame);
+  const bool soft = std::find(poses.columns.begin(), poses.columns.end(), "vertex") != poses.columns.end();
+  if (soft) {
+    add_soft_grains(scene, grains_csv, poses, variants, curvature, box);
+  } else {
+    add_rigid_grains(scene, grains_csv, poses, variants, box);
   }
 }
 

@@ -251,7 +251,7 @@ void read_emitter(TomlSection section, Scene& scene, const std::vector<int>& mes
   section.finish();
 }
 
-SceneRender read_render(TomlSection section, xpbd::BodyKind body) {
+SceneRender read_render(TomlSection section) {
   SceneRender r;
   r.width = static_cast<int>(section.integer("width"));
   r.height = static_cast<int>(section.integer("height"));
@@ -269,7 +269,6 @@ SceneRender read_render(TomlSection section, xpbd::BodyKind body) {
     section.require(*r.eye != *r.look_at, "look_at_m", "a point other than eye_m");
   }
   r.vertical_fov_degrees = section.number("fov_deg");
-  if (body != xpbd::BodyKind::kRigid) section.fail_here("is for rigid grains: a soft pour cannot be rendered yet");
   section.finish();
   return r;
 }
@@ -299,7 +298,7 @@ Scene parse_scene(std::string_view text, const std::string& source, const std::v
       mesh_of_collider.push_back(
           read_collider(*(*colliders)[c].as_table(), source, "colliders." + std::to_string(c + 1), scene));
   read_emitter(section("emitter"), scene, mesh_of_collider);
-  if (document.get("render")) scene.render = read_render(section("render"), scene.grains.body);
+  if (document.get("render")) scene.render = read_render(section("render"));
   return scene;
 }
 

@@ -50,6 +50,10 @@ void SceneGeometryObserver::begin(const World& world) {
   for (size_t i = 0; i < world.variants.size(); ++i)
     write_file_atomically(folder_ / "variants" / ("variant_" + std::to_string(i) + ".ply"),
                           [&](std::ostream& out) { grains::write_ply(out, world.variants[i].grain.render); });
+  if (!world.rigid())
+    for (size_t i = 0; i < world.variants.size(); ++i)
+      write_file_atomically(folder_ / "variants" / ("variant_" + std::to_string(i) + ".mesh"),
+                            [&](std::ostream& out) { grains::write_medit(out, world.variants[i].grain.simulation); });
   write_file_atomically(folder_ / "grains.csv", placement_table(world).text());
 }
 

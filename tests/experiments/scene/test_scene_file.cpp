@@ -275,8 +275,7 @@ fov_deg = 40
   EXPECT_EQ(scene.render->vertical_fov_degrees, 40.0);
   EXPECT_FALSE(parse_scene("", "s.toml").render);  // no section, no render
   EXPECT_TRUE(error_of("[render]\neye_m = [0, 0, 1]\n").starts_with("bad.toml:1: [render] give both eye_m and look_at_m"));
-  EXPECT_TRUE(error_of("[grains]\nbody = \"soft\"\n[render]\nwidth = 64\n")
-                  .starts_with("bad.toml:3: [render] is for rigid grains"));
+  EXPECT_TRUE(parse_scene("[grains]\nbody = \"soft\"\n[render]\nwidth = 64\n", "s.toml").render);  // soft runs render
   EXPECT_TRUE(error_of("[render]\nwidth = 8\n").starts_with("bad.toml:2: [render] width = 8: expected an integer in [16, 16384]"));
 }
 
