@@ -27,12 +27,14 @@ void figure10_command(const Figure10Settings& s, const std::filesystem::path& fo
   };
   for (const double minutes : s.soak_minutes) validate(read_scene_file(s.scene, overrides_for(minutes)));
   make_output_folder(folder);  // only once every run's scene reads
-  CsvTable table({"soak_minutes", "footprint_radius_m", "clusters", "awake_at_end", "simulation_s"});
+  CsvTable table({"soak_minutes", "footprint_radius_m", "clusters", "rebound_height_m", "peak_principal_strain",
+                  "awake_at_end", "simulation_s"});
   std::vector<SceneResult> results;
   for (const double minutes : s.soak_minutes) {
     const SceneResult r =
         run_scene_command(s.scene, overrides_for(minutes), folder / ("soak_" + cell(minutes) + "min"));
-    table.add_row({cell(minutes), cell(r.footprint_radius), cell(r.clusters), cell(r.awake), cell(r.simulation_seconds)});
+    table.add_row({cell(minutes), cell(r.footprint_radius), cell(r.clusters), cell(r.rebound_height),
+                   cell(r.peak_strain), cell(r.awake), cell(r.simulation_seconds)});
     results.push_back(r);
   }
   write_file_atomically(folder / "figure10.csv", table.text());
@@ -42,7 +44,7 @@ void figure10_command(const Figure10Settings& s, const std::filesystem::path& fo
                             std::to_string(results.front().clusters) + " to " + std::to_string(results.back().clusters) +
                             " groups of touching grains";
   std::printf("%s\n", title.c_str());
-  render_plot(folder, "figure10", csv_plot_header("figure10", 1200, 500) + "set multiplot layout 1,2 title '" + title +
+  render_plot(folder, "figure10", csv_plot_header("figure10", 1600, 500) + "set multiplot layout 1,4 title '" + title +
                                       "'\n" + R"(set logscale x 10
 set format x '10^{%L}'
 set xlabel 'soak time [min]'
@@ -50,6 +52,10 @@ set ylabel 'radius holding 90% of the grains [mm]'
 plot 'figure10.csv' using 1:($2*1e3) with linespoints pt 7 lw 2 notitle
 set ylabel 'groups of touching grains'
 plot 'figure10.csv' using 1:3 with linespoints pt 7 lw 2 notitle
+set ylabel 'mean rebound of a grain [mm]'
+plot 'figure10.csv' using 1:($4*1e3) with linespoints pt 7 lw 2 notitle
+set ylabel 'largest mean principal strain (soft grains)'
+plot 'figure10.csv' using 1:5 with linespoints pt 7 lw 2 notitle
 unset multiplot
 )");
 }

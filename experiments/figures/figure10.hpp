@@ -1,8 +1,10 @@
 // `rice figure 10` (paper Fig. 10): a clump of cooked grains dropped onto a plate after three
 // soak times at 10 °C (experiments/scenes/drop.toml). Wetter grains stick (water-content
 // cohesion) and stay heaped; drier ones scatter. Each soak time runs the scene into its own
-// folder; figure10.csv and figure10.png give, per soak time, the footprint radius and the
-// number of groups of touching grains (pile_measures.hpp).
+// folder; figure10.csv and figure10.png give, per soak time, the footprint radius, the
+// number of groups of touching grains (pile_measures.hpp), the grains' mean rebound and, for
+// soft grains, the largest mean principal strain a frame saw (impact_observer.hpp). Soft
+// grains are damped by the soak's water content (eq. 4) and bond by its cohesion.
 #pragma once
 
 #include <filesystem>

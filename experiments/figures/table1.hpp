@@ -1,7 +1,8 @@
 // `rice table 1` (paper Table 1): the shari, chawan, onigiri and bunny scenes
 // (experiments/scenes/*.toml) at the paper's grain counts and 180 frames, each run into its
 // own folder, and table1.csv / table1.md side by side with the paper's times: our simulation
-// time, the paper's and their ratio; our render time at the scene's preview setting and, with
+// time (the scene as it ships: soft grains), the same scene's with rigid grains, the paper's
+// and their ratio, and how many grains the emitter placed; our render time at the scene's preview setting and, with
 // `full`, at the paper's 3840 × 2160 and 800 samples per pixel; and what each scene simulates
 // and renders.
 #pragma once

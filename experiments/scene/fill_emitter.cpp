@@ -1,49 +1,57 @@
 // The fill; see fill_emitter.hpp.
 #include "experiments/scene/fill_emitter.hpp"
 
-#include <array>
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 
 #include "experiments/io/csv_table.hpp"
 #include "experiments/scene/mould_fill.hpp"
-#include "grains/cultivar.hpp"
 
 namespace rice::experiments {
 
+namespace {
+// Grains leave the hand moving down at the speed of a fall of 5 cm, √(2 g 0.05 m): they clear
+// their release points in a few milliseconds, and the next round finds them free.
+constexpr double kDropSpeed = 0.99;  // [m/s]
+constexpr double kCellInGrainLengths = 1.1;  // the lattice's cube side; offsets up to (1.1 − 1)/2 L
+}  // namespace
+
+// The release offsets' stream is its own, seeded from the scene's seed, so they change with it
+// and the grains' shapes do not change with the fill.
 FillEmitter::FillEmitter(const Scene& scene)
     : mould_(scene.emitter.mould),
       round_seconds_(scene.emitter.round_seconds),
-      swell_max_(grains::cultivar_by_name(scene.grains.cultivar).swell_max) {}
+      seconds_(scene.emitter.seconds),
+      random_(scene.grains.seed ^ 0xF111ULL) {}
 
 const xpbd::Collider& FillEmitter::mould(const World& world) const {
   return world.model.colliders[world.first_mesh_collider + mould_];
 }
 
 void FillEmitter::lay_out(World& world) {
-  xpbd::Vec3 box = xpbd::Vec3::Zero();
-  for (const GrainVariant& v : world.variants)
-    box = box.cwiseMax((v.grain.simulation.V.colwise().maxCoeff() - v.grain.simulation.V.colwise().minCoeff()).transpose());
-  cell_ = 1.05 * swell_max_ * box;
-  lattice_ = mould_lattice(mould(world), cell_);
+  clearance_ = world.grain_length;
+  lattice_ = mould_lattice(mould(world), xpbd::Vec3::Constant(kCellInGrainLengths * clearance_));
   if (lattice_.empty()) throw std::invalid_argument("fill: not one grain fits in the mould");
   // Each grain is built at a lattice point (parked apart from the others: a row of parking
-  // places is one lattice's worth) and moved to its own point when released.
+  // places is one lattice's worth) and moved to its release point when released.
   world.drops.clear();
   for (int g = 0; g < world.count(); ++g) world.drops.push_back(lattice_[g % lattice_.size()]);
-  const std::array<Eigen::Quaterniond, 4> turns{
-      Eigen::Quaterniond::Identity(), Eigen::Quaterniond(0.0, 1.0, 0.0, 0.0), Eigen::Quaterniond(0.0, 0.0, 1.0, 0.0),
-      Eigen::Quaterniond(0.0, 0.0, 0.0, 1.0)};
-  for (int g = 0; g < world.count(); ++g) world.instances[g].rotation = turns[g % 4];
   world.parking_row = static_cast<int>(lattice_.size());
 }
 
 void FillEmitter::emit(World& world, double time) {
-  if (world.released == world.count() || time < next_round_ - 1e-9 || time >= mould(world).removal_time) return;
-  // A round: grains at the free lattice points, lowest first.
-  for (const xpbd::Vec3& spot : free_points(lattice_, world.released_centres(), cell_.maxCoeff())) {
+  if (world.released == world.count() || time < next_round_ - 1e-9 || time >= std::min(seconds_, mould(world).removal_time))
+    return;
+  // A round: the lattice points moved by this round's offsets, those no grain is near, lowest
+  // first.
+  const double offset = 0.5 * (kCellInGrainLengths - 1.0) * clearance_;
+  std::vector<xpbd::Vec3> points = lattice_;
+  for (xpbd::Vec3& p : points)
+    p += xpbd::Vec3(random_.uniform(-offset, offset), random_.uniform(-offset, offset), random_.uniform(-offset, offset));
+  for (const xpbd::Vec3& spot : free_points(points, world.released_centres(), clearance_)) {
     if (world.released == world.count()) break;
-    world.release(world.released, spot - world.drops[world.released]);
+    world.release(world.released, spot - world.drops[world.released], xpbd::Vec3(0.0, 0.0, -kDropSpeed));
     ++world.released;
   }
   next_round_ = time + round_seconds_;

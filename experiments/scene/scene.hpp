@@ -77,9 +77,9 @@ struct SceneEmitter {
   /// (a spout's; a clump's leave at once).
   double height = 0.02, radius = 0.0, seconds = 1.5;
   /// Fill: the hollow mesh collider filled (an index into Scene::mesh_colliders), in rounds
-  /// `round_seconds` apart.
+  /// `round_seconds` apart for `seconds` (or until the mould is removed).
   int mould = -1;
-  double round_seconds = 0.5;
+  double round_seconds = 0.05;
 };
 
 /// [effects]: what is simulated; what is off costs nothing.

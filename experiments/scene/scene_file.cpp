@@ -238,6 +238,7 @@ void read_emitter(TomlSection section, Scene& scene, const std::vector<int>& mes
     section.require(hollow_mesh, "mould", "the number of a [[colliders]] with shape = 'mesh' and hollow = true");
     e.mould = mesh_of_collider[mould - 1];
     e.round_seconds = section.number("round_s");
+    e.seconds = section.number("seconds");
   } else {
     e.height = section.number("height_m");
     e.radius = section.number("radius_m");

@@ -90,20 +90,21 @@ std::vector<SceneKey> solver_container_emitter_keys() {
       number("container", "grid_spacing_m", closed(2e-4, 1e-2), 1e-3, "the chawan's distance grid [m]"),
       number("container", "scale", closed(0.1, 10), 1.0, "the chawan's sizes times this (1: 12 cm across)"),
       choice("emitter", "kind", {"spout", "clump", "fill"}, std::string("spout"),
-             "spout: a stream of layers over `seconds`; clump: every layer at once, stacked; fill: a hollow mesh "
-             "collider filled in rounds"),
+             "spout: a stream of layers over `seconds`; clump: every layer at once, stacked; fill: grains dropped "
+             "into a hollow mesh collider in rounds"),
       number("emitter", "height_m", closed(0, 10), 0.02, "spout and clump: the opening above the chawan's rim or the plate [m]"),
       number("emitter", "radius_m", closed(0, 1), 0.0,
              "spout and clump: the opening's radius [m]; 0: the container's (a plate: 1.1 grain lengths; a chawan: 0.6 "
              "of its inner radius less a grain length)"),
       number("emitter", "seconds", open_low(0, 1e4), 1.5,
-             "spout: the time over which its layers leave [s] (all at once: kind = 'clump')"),
+             "spout: the time over which its layers leave [s] (all at once: kind = 'clump'); fill: the time its "
+             "rounds go on"),
       integer("emitter", "mould", closed(1, 1000), {},
               "fill: the number of the [[colliders]] to fill (1 for the first), a mesh with hollow = true",
               "required"),
-      number("emitter", "round_s", open_low(0, 1e3), 0.5,
-             "fill: the time between rounds [s]; each round puts grains at the free points of a lattice of their "
-             "boxes, lowest first"),
+      number("emitter", "round_s", open_low(0, 1e3), 0.05,
+             "fill: the time between rounds [s]; each round drops grains, randomly turned, at the free points of a "
+             "jittered lattice 1.25 grain lengths apart, lowest first"),
   };
 }
 

@@ -4,6 +4,7 @@
 #include "experiments/scene/clump_emitter.hpp"
 #include "experiments/scene/fill_emitter.hpp"
 #include "experiments/scene/frames_observer.hpp"
+#include "experiments/scene/impact_observer.hpp"
 #include "experiments/scene/pile_observer.hpp"
 #include "experiments/scene/render_mesh_observer.hpp"
 #include "experiments/scene/scene_geometry_observer.hpp"
@@ -29,6 +30,7 @@ std::vector<std::unique_ptr<Observer>> make_observers(const Scene& scene, const 
   observers.push_back(std::make_unique<FramesObserver>(folder));
   if (scene.effects.render_meshes) observers.push_back(std::make_unique<RenderMeshObserver>(folder));
   observers.push_back(std::make_unique<PileObserver>(folder, scene));
+  if (scene.emitter.kind == EmitterKind::kClump) observers.push_back(std::make_unique<ImpactObserver>());
   observers.push_back(std::make_unique<SectionObserver>(folder, scene));
   return observers;
 }

@@ -27,6 +27,10 @@ struct SceneResult {
   double section_height = 0.0, packing_fraction = 0.0;
   /// Grains in the mould's room or within the bowl's rim at the end (-1: a plate).
   int in_container = -1;
+  int released = 0;  ///< grains the emitter placed in the scene (a fill may find no room for some)
+  /// A dropped clump (impact_observer.hpp): the grains' mean rebound [m], and the soft tets'
+  /// largest mean principal strain over the frames (NaN for rigid grains).
+  double rebound_height = 0.0, peak_strain = 0.0;
 };
 
 }  // namespace rice::experiments

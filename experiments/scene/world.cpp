@@ -9,15 +9,17 @@
 
 namespace rice::experiments {
 
-void World::release(int g, const xpbd::Vec3& offset) {
+void World::release(int g, const xpbd::Vec3& offset, const xpbd::Vec3& velocity) {
   const xpbd::Vec3 move = offset - parking(g);
   xpbd::Body& body = model.bodies[g];
   if (body.kind == xpbd::BodyKind::kRigid) {
     xpbd::RigidBody& rigid = model.rigid_bodies[body.rigid_body];
     rigid.x += move;
+    rigid.v = velocity;
     rigid.remember_pose();
   } else {
     model.particles.x.middleRows(body.first_particle, body.particle_count).rowwise() += move.transpose();
+    model.particles.v.middleRows(body.first_particle, body.particle_count).rowwise() = velocity.transpose();
   }
   xpbd::wake(body);
 }

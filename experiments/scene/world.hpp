@@ -47,8 +47,9 @@ struct World {
   /// Where grain g waits until released: rows 2 m apart along x, far from everything.
   xpbd::Vec3 parking(int g) const { return xpbd::Vec3(2.0 * (1 + g / parking_row), 0.0, 0.0); }
 
-  /// Moves parked grain g to its build point moved by `offset`, and wakes it.
-  void release(int g, const xpbd::Vec3& offset);
+  /// Moves parked grain g to its build point moved by `offset`, gives it `velocity`, and wakes
+  /// it.
+  void release(int g, const xpbd::Vec3& offset, const xpbd::Vec3& velocity = xpbd::Vec3::Zero());
 
   xpbd::Vec3 centre(int g) const;
   /// The speed of grain g's centre of mass [m/s].

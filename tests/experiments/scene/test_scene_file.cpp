@@ -329,15 +329,15 @@ TEST(SceneFile, GrainsThatMissTheBowlStayOutOfItsMeasures) {
 }
 
 TEST(SceneFile, TheMouldScenesRunShortAndEveryGrainFindsRoom) {
-  // Short variants of the shari and the bunny: the fill puts every grain in the mould in its
-  // first round; grains start inside it (the highest centre below the mould's top).
+  // Short variants of the shari and the bunny: the fill drops every grain into the mould within
+  // a few rounds; grains start inside it (the highest centre below the mould's top).
   for (const auto& [name, mould_top] : {std::pair("shari", 0.04), std::pair("bunny", 0.0497 + 0.05)}) {
     SCOPED_TRACE(name);
     const std::filesystem::path out = std::filesystem::path(RICE_TEST_SCRATCH) / (std::string("scene-") + name);
     std::filesystem::remove_all(out);
     const SceneResult result = run_scene_command(
         std::filesystem::path(RICE_SCENES_DIR) / (std::string(name) + ".toml"),
-        {"grains.count=40", "grains.variants=2", "solver.frames=3", "render.width=32", "render.height=24",
+        {"grains.count=40", "grains.variants=2", "solver.frames=6", "render.width=32", "render.height=24",
          "render.samples_per_pixel=1"},
         out);
     EXPECT_GT(result.top, 0.0);
@@ -345,7 +345,6 @@ TEST(SceneFile, TheMouldScenesRunShortAndEveryGrainFindsRoom) {
     std::ifstream info(out / "run_info.txt");
     const std::string text((std::istreambuf_iterator<char>(info)), std::istreambuf_iterator<char>());
     EXPECT_NE(text.find("grains_placed: 40\n"), std::string::npos) << text;
-    EXPECT_NE(text.find("fill_rounds: 1\n"), std::string::npos) << text;
   }
 }
 
