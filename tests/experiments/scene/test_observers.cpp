@@ -7,9 +7,13 @@
 #include <fstream>
 #include <iterator>
 
+#include "experiments/scene/clump_emitter.hpp"
+#include "experiments/scene/impact_observer.hpp"
 #include "experiments/scene/render_mesh_observer.hpp"
 #include "experiments/scene/scene_parts.hpp"
 #include "experiments/scene/scene_run.hpp"
+#include "experiments/scene/stepper.hpp"
+#include "experiments/scene/world_builder.hpp"
 
 namespace rice::experiments {
 namespace {
@@ -75,6 +79,48 @@ TEST(Observers, ARunWritesAStatsRowAndAPoseFilePerFrameAndItsMeasures) {
   fs::remove_all(meshes);
   run_scene(scene, meshes);
   EXPECT_EQ(files_with(meshes / "frames", ".ply"), 4);
+}
+
+TEST(ImpactObserver, MeasuresTheRiseAboveTheLowestPointAndTheLargestPrincipalStrain) {
+  Scene scene;
+  scene.container.kind = Container::kPlate;
+  scene.emitter.kind = EmitterKind::kClump;
+  scene.grains.body = xpbd::BodyKind::kSoft;
+  scene.grains.count = 2;
+  scene.grains.variants = 1;
+  ClumpEmitter clump(scene.emitter, scene.container);
+  World world = build_world(scene, clump);
+  clump.emit(world, 0.0);
+  const Stepper stepper(world.model, scene);
+  ImpactObserver impact;
+  impact.begin(world);
+  // Grain 0 falls 3 mm, rises 0.5 mm, falls 1 mm more and rises 0.2 mm: its rebound is 0.5 mm.
+  // Grain 1 only falls. Then grain 0 is stretched by 2% in every direction: σ_i = 1.02, while
+  // grain 1 stays at rest, so the volume-weighted mean strain is 2% of grain 0's share.
+  const xpbd::Body& body = world.model.bodies[0];
+  auto particles = [&](int g) {
+    const xpbd::Body& b = world.model.bodies[g];
+    return world.model.particles.x.middleRows(b.first_particle, b.particle_count);
+  };
+  int frame = 0;
+  for (const double dz : {-3e-3, 0.5e-3, -1.5e-3, 0.2e-3}) {
+    particles(0).col(2).array() += dz;
+    particles(1).col(2).array() -= 1e-3;
+    impact.observe(world, stepper, ++frame, 0.0);
+  }
+  const xpbd::Vec3 c = world.centre(0);
+  particles(0) = ((particles(0).rowwise() - c.transpose()) * 1.02).rowwise() + c.transpose();
+  impact.observe(world, stepper, ++frame, 0.0);
+  SceneReport report;
+  impact.end(world, stepper, report);
+  EXPECT_NEAR(report.result.rebound_height, 0.5 * 0.5e-3, 1e-12);  // the mean of 0.5 mm and 0
+  double volume[2] = {0.0, 0.0};
+  for (const xpbd::NeoHookeanTet& tet : world.model.neo_hookean)
+    volume[tet.particles[0] >= body.first_particle + body.particle_count] += tet.rest_volume;
+  EXPECT_NEAR(report.result.peak_strain, 0.02 * volume[0] / (volume[0] + volume[1]), 1e-9);
+  EXPECT_NE(std::find(report.info.begin(), report.info.end(),
+                      std::pair<std::string, std::string>{"peak_principal_strain_frame", "5"}),
+            report.info.end());
 }
 
 }  // namespace
