@@ -11,6 +11,7 @@
 #include "experiments/studies/oscillator_study.hpp"
 #include "experiments/studies/pour_substep_study.hpp"
 #include "experiments/studies/render_study.hpp"
+#include "experiments/studies/scene_convergence_study.hpp"
 #include "experiments/studies/soft_curvature_study.hpp"
 #include "experiments/studies/tet_quality_study.hpp"
 #include "experiments/studies/xpbd_stiffness_study.hpp"
@@ -33,6 +34,7 @@ class StudyCommands : public CommandFamily {
     add_stiffness(study);
     add_oscillator(study);
     add_convergence(study);
+    add_scene_convergence(study);
   }
 
  private:
@@ -213,6 +215,27 @@ class StudyCommands : public CommandFamily {
         [this] { convergence_study_command(convergence_settings(), convergence_out_); });
   }
 
+  void add_scene_convergence(CLI::App* study) {
+    CLI::App* c = study->add_subcommand(
+        "scene-convergence", "a soft shari pressed in its mould: XPBD and VBD against a converged run, error and time");
+    SceneConvergenceSettings& s = scene_convergence_;
+    c->add_option("--out", scene_convergence_out_, "output folder")->capture_default_str();
+    c->add_flag("--quick", scene_convergence_quick_, "12 grains, 8 frames and a 2 x 2 grid, for CI (seconds)");
+    c->add_option("--scene", s.scene, "the scene file (a mould and its lid)")->capture_default_str();
+    c->add_option("--count", s.count, "grains")->check(number_in(1, 1e5))->capture_default_str();
+    c->add_option("--frames", s.frames, "frames")->check(number_in(1, 1e5))->capture_default_str();
+    add(c, [this] { experiments::validate(scene_convergence_settings()); },
+        [this] { scene_convergence_study_command(scene_convergence_settings(), scene_convergence_out_); });
+  }
+
+  /// --quick's grid, the scene given.
+  SceneConvergenceSettings scene_convergence_settings() const {
+    if (!scene_convergence_quick_) return scene_convergence_;
+    SceneConvergenceSettings settings = SceneConvergenceSettings::quick();
+    settings.scene = scene_convergence_.scene;
+    return settings;
+  }
+
   /// --quick's settings, then the options given.
   ConvergenceSettings convergence_settings() const {
     ConvergenceSettings settings = convergence_quick_ ? ConvergenceSettings::quick() : ConvergenceSettings{};
@@ -226,6 +249,9 @@ class StudyCommands : public CommandFamily {
   std::string cdrf_out_ = "out/cdrf";
   RenderStudySettings render_;
   std::string render_out_ = "out/render-study";
+  SceneConvergenceSettings scene_convergence_;
+  std::string scene_convergence_out_ = "out/scene-convergence";
+  bool scene_convergence_quick_ = false;
   SoftCurvatureStudySettings soft_curvature_;
   std::string soft_curvature_out_ = "out/soft-curvature";
   PourSubstepStudySettings pour_substeps_;

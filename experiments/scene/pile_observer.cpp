@@ -26,6 +26,7 @@ void PileObserver::end(const World& world, const Stepper&, SceneReport& report) 
   r.clusters = count_clusters(world.model, 1e-4);
   r.top = world.top();
   r.released = world.released;
+  r.grain_length = world.grain_length;
   const std::optional<HeapProfile> fitted = write_pile_plot(
       folder_, centres,
       {.plate = plate_, .cohesion = cohesion_, .rim_radius = world.bowl.rim_radius, .ring_width = 0.5 * world.grain_length});

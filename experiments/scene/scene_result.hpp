@@ -10,6 +10,7 @@ struct SceneResult {
   double simulation_seconds = 0.0;  ///< wall time of the frames
   double render_seconds = 0.0;      ///< the [render] section's image (0: the scene has none)
   int awake = 0;                    ///< grains awake at the end
+  double kinetic_energy = 0.0;      ///< of every grain at the end [J]
   xpbd::Penetration penetration;    ///< the deepest overlaps at the end
   /// On a plate: the heap's angle of repose [°] and its apex above the lowest centre [m]; NaN
   /// in a bowl or for grains scattered one deep.
@@ -28,6 +29,7 @@ struct SceneResult {
   /// Grains in the mould's room or within the bowl's rim at the end (-1: a plate).
   int in_container = -1;
   int released = 0;  ///< grains the emitter placed in the scene (a fill may find no room for some)
+  double grain_length = 0.0;  ///< the world's largest grain length L [m]
   /// A dropped clump (impact_observer.hpp): the grains' mean rebound [m], and the soft tets'
   /// largest mean principal strain over the frames (NaN for rigid grains).
   double rebound_height = 0.0, peak_strain = 0.0;

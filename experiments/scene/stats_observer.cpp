@@ -42,6 +42,7 @@ void StatsObserver::end(const World& world, const Stepper& stepper, SceneReport&
   write_file_atomically(folder_ / "stats.csv", stats_.text());
   SceneResult& r = report.result;
   r.awake = static_cast<int>(awake_grains(world));
+  r.kinetic_energy = xpbd::kinetic_energy(world.model);
   r.penetration = xpbd::deepest_penetration(world.model, stepper.time());
   const bool removed = std::isfinite(first_removal_);
   r.top_before_removal = removed ? top_before_removal_ : std::numeric_limits<double>::quiet_NaN();
