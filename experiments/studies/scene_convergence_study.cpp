@@ -79,14 +79,14 @@ void compare(std::vector<Run>& runs) {
   }
 }
 
-/// Marks the runs no other run beats in both wall time and centre error (the reference aside).
+/// Marks the runs no other run beats in both wall time and top error (the reference aside).
 void mark_pareto_front(std::vector<Run>& runs) {
   for (Run& a : runs) {
     if (a.setting.reference) continue;
     a.pareto = std::none_of(runs.begin(), runs.end(), [&](const Run& b) {
       return !b.setting.reference && &b != &a && b.result.simulation_seconds <= a.result.simulation_seconds &&
-             b.centre_error <= a.centre_error &&
-             (b.result.simulation_seconds < a.result.simulation_seconds || b.centre_error < a.centre_error);
+             b.top_error <= a.top_error &&
+             (b.result.simulation_seconds < a.result.simulation_seconds || b.top_error < a.top_error);
     });
   }
 }
@@ -105,7 +105,7 @@ CsvTable table_of(const std::vector<Run>& runs) {
 }
 
 void plot(const std::filesystem::path& folder, const std::vector<Run>& runs) {
-  CsvTable front({"wall_s", "centre_rms_over_length"});
+  CsvTable front({"wall_s", "top_error_m"});
   std::vector<const Run*> on_front;
   for (const Run& r : runs)
     if (r.pareto) on_front.push_back(&r);
@@ -113,18 +113,18 @@ void plot(const std::filesystem::path& folder, const std::vector<Run>& runs) {
             [](const Run* a, const Run* b) { return a->result.simulation_seconds < b->result.simulation_seconds; });
   std::string title = "Pareto front:";
   for (const Run* r : on_front) {
-    front.add_row({cell(r->result.simulation_seconds), cell(r->centre_error)});
+    front.add_row({cell(r->result.simulation_seconds), cell(r->top_error)});
     title += " " + r->setting.name();
   }
   write_file_atomically(folder / "scene_convergence_front.csv", front.text());
   render_plot(folder, "scene_convergence", csv_plot_header("scene_convergence", 900, 600) + R"(set logscale xy
 set xlabel 'wall time of the simulation [s]'
-set ylabel 'RMS of the grain centres from the reference / grain length'
-set title ')" + title + R"('
-set key left bottom
-plot 'scene_convergence.csv' using 6:(strcol(2) eq 'xpbd' && $5 == 0 ? $7 : 1/0) with points pt 7 ps 1.5 title 'XPBD', \
-     '' using 6:(strcol(2) eq 'vbd' ? $7 : 1/0) with points pt 5 ps 1.5 title 'vertex block descent', \
-     '' using 6:($5 == 0 ? $7 : 1/0):1 with labels offset 0,1 font ',8' notitle, \
+set ylabel 'top centre: distance from the reference [m]'
+set title ')" + title + R"(' noenhanced
+set key right top
+plot 'scene_convergence.csv' using 6:(strcol(2) eq 'xpbd' && $5 == 0 ? $9 : 1/0) with points pt 7 ps 1.5 title 'XPBD', \
+     '' using 6:(strcol(2) eq 'vbd' ? $9 : 1/0) with points pt 5 ps 1.5 title 'vertex block descent', \
+     '' using 6:($5 == 0 ? $9 : 1/0):1 with labels offset 0,1 font ',8' noenhanced notitle, \
      'scene_convergence_front.csv' using 1:2 with lines lw 2 dt 2 title 'Pareto front'
 )");
 }
