@@ -1,11 +1,7 @@
-// A mould filled with grains (scene files' `[emitter] kind = "fill"`): grain centres on a
-// lattice of boxes, one grain's bounding box each, inside the room of a collider (a hollow
-// mesh), lowest first, each layer shifted half a box in x and y from the one below, as
-// bricks are laid: a grain lands across four, so cohesive bonds tie the columns together
-// (stacked straight, grains fell into columns that touched only above and below, and the
-// moulded pile slumped as soon as the mould went). A lattice packs loosely (grains settle to well under its height), so
-// the mould is filled in rounds: each round puts grains at the lattice points that no grain
-// is near (free_points), and they settle before the next.
+// Release points inside a mould (scene files' `[emitter] kind = "fill"`, fill_emitter.hpp): the
+// centres of a lattice of boxes inside the room of a collider (a hollow mesh), lowest first,
+// each layer shifted half a box in x and y from the one below, and the points no grain is
+// near yet (free_points). The fill jitters them and drops grains from them round by round.
 #pragma once
 
 #include <vector>
