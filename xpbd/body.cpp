@@ -96,6 +96,14 @@ int add_soft_body(Model& model, const TetMesh& mesh, double density, const LameP
   return static_cast<int>(model.bodies.size()) - 1;
 }
 
+std::vector<int> soft_body_of_particle(const Model& model) {
+  std::vector<int> owner(model.particles.size(), -1);
+  for (size_t b = 0; b < model.bodies.size(); ++b)
+    if (model.bodies[b].kind == BodyKind::kSoft)
+      std::fill_n(owner.begin() + model.bodies[b].first_particle, model.bodies[b].particle_count, static_cast<int>(b));
+  return owner;
+}
+
 Vec3 body_centre(const Model& model, const Body& body) {
   if (body.kind == BodyKind::kRigid) return model.rigid_bodies[body.rigid_body].x;
   const Eigen::VectorXd masses = model.particles.w.segment(body.first_particle, body.particle_count).cwiseInverse();

@@ -66,6 +66,9 @@ int add_soft_body(Model& model, const TetMesh& mesh, double density, const LameP
 /// Centre of mass: the rigid body's x, or the mass-weighted mean of a soft body's particles.
 Vec3 body_centre(const Model& model, const Body& body);
 
+/// For each particle, the soft body that owns it, or −1 (#particles).
+std::vector<int> soft_body_of_particle(const Model& model);
+
 /// Rigid: the largest distance from the centre of mass to a point of its spheres [m] (0 for a
 /// soft body, whose points are its particles).
 double reach(const Body& body);

@@ -44,11 +44,7 @@ ContactSolver::ContactSolver(Model& model, bool parallel) : model_(model), paral
   start_box_.resize(model.bodies.size());
   motion_.assign(model.bodies.size(), 0.0);
   centres_at_rest_.assign(model.bodies.size(), 0);
-  body_of_particle_.assign(model.particles.size(), -1);
-  for (size_t b = 0; b < model.bodies.size(); ++b)
-    if (model.bodies[b].kind == BodyKind::kSoft)
-      std::fill_n(body_of_particle_.begin() + model.bodies[b].first_particle, model.bodies[b].particle_count,
-                  static_cast<int>(b));
+  body_of_particle_ = soft_body_of_particle(model);
   has_friction_ = s.static_friction > 0.0;
   for (size_t c = 0; c < model.colliders.size(); ++c) {
     validate(model.colliders[c], static_cast<int>(c));

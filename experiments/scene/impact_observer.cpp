@@ -7,19 +7,14 @@
 #include <limits>
 
 #include "experiments/io/csv_table.hpp"
+#include "xpbd/body.hpp"
+#include "xpbd/tet_stencil.hpp"
 
 namespace rice::experiments {
 
 void ImpactObserver::begin(const World& world) {
-  const xpbd::Model& model = world.model;
-  // Bodies own consecutive particles, in order: a tet's grain is the last body starting at or
-  // before its first particle.
-  std::vector<int> first;
-  for (const xpbd::Body& body : model.bodies) first.push_back(body.first_particle);
-  for (const xpbd::NeoHookeanTet& tet : model.neo_hookean) {
-    const auto after = std::upper_bound(first.begin(), first.end(), tet.particles[0]);
-    body_of_tet_.push_back(static_cast<int>(after - first.begin()) - 1);
-  }
+  const std::vector<int> owner = xpbd::soft_body_of_particle(world.model);
+  for (const xpbd::NeoHookeanTet& tet : world.model.neo_hookean) body_of_tet_.push_back(owner[tet.particles[0]]);
   lowest_.assign(world.count(), std::numeric_limits<double>::infinity());
   rebound_.assign(world.count(), 0.0);
 }
@@ -30,10 +25,9 @@ double ImpactObserver::mean_principal_strain(const World& world) const {
   for (size_t t = 0; t < model.neo_hookean.size(); ++t) {
     if (body_of_tet_[t] >= world.released) continue;
     const xpbd::NeoHookeanTet& tet = model.neo_hookean[t];
-    const auto x = [&](int k) { return model.particles.x.row(tet.particles[k]).transpose(); };
-    xpbd::Mat3 Ds;
-    Ds << x(1) - x(0), x(2) - x(0), x(3) - x(0);
-    const Eigen::Vector3d sigma = Eigen::JacobiSVD<xpbd::Mat3>(Ds * tet.Dm_inv).singularValues();
+    const auto x = [&](int k) -> xpbd::Vec3 { return model.particles.x.row(tet.particles[k]).transpose(); };
+    const xpbd::Mat3 F = xpbd::edge_matrix(x(0), x(1), x(2), x(3)) * tet.Dm_inv;  // F = D_s D_m⁻¹
+    const Eigen::Vector3d sigma = Eigen::JacobiSVD<xpbd::Mat3>(F).singularValues();
     strain += tet.rest_volume * (sigma.array() - 1.0).abs().maxCoeff();
     volume += tet.rest_volume;
   }
