@@ -123,9 +123,17 @@ class StudyCommands : public CommandFamily {
         ->capture_default_str();
     c->add_option("--vbd-iterations", s.vbd_iterations, "vertex block descent sweep counts")
         ->check(number_in(1, 1000))->capture_default_str();
-    c->add_option("--frames", s.frames, "frames of 1/60 s")->check(number_in(1, 1e5))->capture_default_str();
-    c->add_option("--young", s.young, "Young's modulus [Pa]")->check(number_in(1, 1e12))->capture_default_str();
+    c->add_option("--frames", s.setup.frames, "frames of 1/60 s")->check(number_in(1, 1e5))->capture_default_str();
+    c->add_option("--young", s.setup.young, "Young's modulus [Pa]")->check(number_in(1, 1e12))->capture_default_str();
+    c->add_option("--drop-height", s.setup.drop_height, "the grain's lowest point above the ground at the start [m]")
+        ->check(number_in(0, 10))->capture_default_str();
+    c->add_flag("--on-spheres", s.setup.on_spheres,
+                "touch the ground with the collision spheres through the contact solver, as in a scene");
     c->add_option("--seed", s.seed, "grain seed")->check(seed_value())->capture_default_str();
+    c->add_option("--min-vertices", s.min_vertices, "fewest vertices of the simulation mesh")
+        ->check(number_in(4, 10000))->capture_default_str();
+    c->add_option("--max-vertices", s.max_vertices, "most vertices of the simulation mesh")
+        ->check(number_in(4, 10000))->capture_default_str();
     add(c, [this] { experiments::validate(grain_substeps_); },
         [this] { grain_substep_study_command(grain_substeps_, grain_substeps_out_); });
   }

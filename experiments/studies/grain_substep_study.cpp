@@ -17,19 +17,42 @@
 #include "experiments/io/csv_table.hpp"
 #include "experiments/io/progress.hpp"
 #include "experiments/io/run_info.hpp"
+#include "grains/collision_spheres.hpp"
 #include "grains/grain_generator.hpp"
+#include "xpbd/body.hpp"
 #include "xpbd/solver.hpp"
 
 namespace rice::experiments {
 
-GrainRestRun simulate_grain_at_rest(const grains::Grain& grain, double young, int frames, xpbd::Method method,
+namespace {
+
+/// The grain as a soft body with its collision spheres, on a half-space collider at z = 0.
+void add_grain_on_spheres(xpbd::Model& model, const grains::Grain& grain, const xpbd::TetMesh& mesh,
+                          const xpbd::LameParameters& material) {
+  const grains::CollisionSpheres spheres = grains::fit_collision_spheres({mesh.V, mesh.T});
+  xpbd::add_soft_body(model, mesh, grain.simulation_density, material, 0.0, {spheres.centres, spheres.radii});
+  xpbd::Collider ground;
+  ground.static_friction = 0.5;
+  ground.dynamic_friction = 0.4;
+  model.colliders.push_back(ground);
+}
+
+}  // namespace
+
+GrainRestRun simulate_grain_at_rest(const grains::Grain& grain, const GrainRestSetup& setup, xpbd::Method method,
                                     int substeps, int iterations) {
-  const xpbd::TetMesh mesh{grain.simulation.V, grain.simulation.T};
+  xpbd::TetMesh mesh{grain.simulation.V, grain.simulation.T};
+  mesh.V.col(2).array() += setup.drop_height - mesh.V.col(2).minCoeff();
+  const auto material = xpbd::lame_from_young_poisson(setup.young, 0.3);
   xpbd::Model model;
-  model.particles = xpbd::make_particles(mesh, grain.simulation_density);
-  xpbd::add_neo_hookean_tets(model, mesh, xpbd::lame_from_young_poisson(young, 0.3));
-  model.particles.x.col(2).array() -= model.particles.x.col(2).minCoeff();
-  model.ground = xpbd::GroundPlane{.static_friction = 0.5, .dynamic_friction = 0.4};
+  if (setup.on_spheres) {
+    add_grain_on_spheres(model, grain, mesh, material);
+  } else {
+    model.particles = xpbd::make_particles(mesh, grain.simulation_density);
+    xpbd::add_neo_hookean_tets(model, mesh, material);
+    model.ground = xpbd::GroundPlane{.static_friction = 0.5, .dynamic_friction = 0.4};
+  }
+  const int frames = setup.frames;
   GrainRestRun run;
   run.method = method;
   run.substeps = substeps;
@@ -60,8 +83,11 @@ void validate(const GrainSubstepStudySettings& s) {
   for (const auto* list : {&s.xpbd_iterations, &s.vbd_iterations})
     for (const int k : *list)
       if (k < 1 || k > 1000) throw std::invalid_argument("grain-substeps: iteration counts must be in [1, 1000]");
-  if (s.frames < 1) throw std::invalid_argument("grain-substeps: --frames must be >= 1");
-  if (!(s.young > 0.0)) throw std::invalid_argument("grain-substeps: --young must be > 0");
+  if (s.setup.frames < 1) throw std::invalid_argument("grain-substeps: --frames must be >= 1");
+  if (!(s.setup.young > 0.0)) throw std::invalid_argument("grain-substeps: --young must be > 0");
+  if (!(s.setup.drop_height >= 0.0)) throw std::invalid_argument("grain-substeps: --drop-height must be >= 0");
+  if (s.min_vertices < 4 || s.max_vertices < s.min_vertices)
+    throw std::invalid_argument("grain-substeps: --mesh-vertices needs 4 <= MIN <= MAX");
 }
 
 void grain_substep_study_command(const GrainSubstepStudySettings& s, const std::filesystem::path& folder) {
@@ -70,6 +96,8 @@ void grain_substep_study_command(const GrainSubstepStudySettings& s, const std::
   const auto start = std::chrono::steady_clock::now();
   grains::GrainRecipe recipe;
   recipe.cultivar = grains::cultivar_by_name("japonica");
+  recipe.simulation.min_vertices = s.min_vertices;
+  recipe.simulation.max_vertices = s.max_vertices;
   const grains::Grain grain = grains::make_grain(recipe, s.seed);
   struct Job {
     xpbd::Method method;
@@ -82,7 +110,7 @@ void grain_substep_study_command(const GrainSubstepStudySettings& s, const std::
   }
   std::vector<GrainRestRun> runs(jobs.size());
   for_each_item("grain-substeps", static_cast<int>(jobs.size()), [&](int j) {
-    runs[j] = simulate_grain_at_rest(grain, s.young, s.frames, jobs[j].method, jobs[j].substeps, jobs[j].iterations);
+    runs[j] = simulate_grain_at_rest(grain, s.setup, jobs[j].method, jobs[j].substeps, jobs[j].iterations);
   });
   // The finest vertex-block-descent run (most substeps, then most iterations) is the reference.
   const GrainRestRun* reference = nullptr;
@@ -131,9 +159,12 @@ plot for [i=1:words(X)] 'grain_substeps.csv' using (strcol(1) eq 'xpbd' && $3 ==
 )");
   stop_point();
   write_file_atomically(folder / "run_info.txt", run_info({{"study", "grain-substeps"},
-                                                           {"frames", cell(s.frames)},
-                                                           {"young_pa", cell(s.young)},
+                                                           {"frames", cell(s.setup.frames)},
+                                                           {"young_pa", cell(s.setup.young)},
+                                                           {"drop_height_m", cell(s.setup.drop_height)},
+                                                           {"contact", s.setup.on_spheres ? "collision spheres" : "particles"},
                                                            {"seed", cell(static_cast<long>(s.seed))},
+                                                           {"vertices", cell(static_cast<long>(grain.simulation.V.rows()))},
                                                            {"tets", cell(static_cast<long>(grain.simulation.T.rows()))},
                                                            {"wall_s", cell(seconds_since(start))}}));
 }
