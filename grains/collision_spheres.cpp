@@ -47,10 +47,14 @@ void validate(const CollisionSphereParameters& p) {
 }
 
 CollisionSpheres fit_collision_spheres(const VolumeMesh& mesh, const CollisionSphereParameters& parameters) {
-  validate(parameters);
   if (mesh.T.rows() == 0) throw std::invalid_argument("collision spheres: the mesh has no tets");
-  const SurfaceMesh surface = boundary_surface(mesh);
-  const double thickness = bounding_box_extent(mesh.V).minCoeff();
+  return fit_collision_spheres(boundary_surface(mesh), parameters);
+}
+
+CollisionSpheres fit_collision_spheres(const SurfaceMesh& surface, const CollisionSphereParameters& parameters) {
+  validate(parameters);
+  if (surface.F.rows() == 0) throw std::invalid_argument("collision spheres: the surface has no faces");
+  const double thickness = bounding_box_extent(surface.V).minCoeff();
   const double tolerance = parameters.tolerance * thickness;
   const double voxel = parameters.voxel_size * thickness;
   const std::vector<Vec3> samples = surface_samples(surface);

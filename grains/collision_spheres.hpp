@@ -36,5 +36,7 @@ void validate(const CollisionSphereParameters& parameters);
 
 /// Spheres for the tet mesh `mesh` (its boundary is the surface to follow). Deterministic.
 CollisionSpheres fit_collision_spheres(const VolumeMesh& mesh, const CollisionSphereParameters& parameters = {});
+/// Spheres for the closed surface `surface`. Deterministic.
+CollisionSpheres fit_collision_spheres(const SurfaceMesh& surface, const CollisionSphereParameters& parameters = {});
 
 }  // namespace rice::grains

@@ -32,6 +32,7 @@ void validate(const GrainRecipe& recipe) {
   validate(recipe.cultivar);
   validate(recipe.porosity);
   validate(recipe.simulation);
+  if (recipe.cage) validate(*recipe.cage);
   if (!(recipe.mesh_adaptivity >= 0.0 && recipe.mesh_adaptivity <= 1.0))
     throw std::invalid_argument("mesh adaptivity must be in [0, 1]");
   if (!(recipe.density > 0.0)) throw std::invalid_argument("density must be positive");
@@ -64,7 +65,16 @@ Grain make_grain(const GrainRecipe& recipe, std::uint64_t seed, std::optional<do
   grain.timings.render_mesh = seconds_since(start);
 
   start = std::chrono::steady_clock::now();
-  grain.simulation = make_simulation_mesh(base, recipe.simulation, random.child_seed());
+  // The cage draws no random number, so the streams after it match Mesh_3's grains.
+  const std::uint64_t mesh_seed = random.child_seed();
+  if (recipe.cage) {
+    Vertices enclosed(base.V.rows() + grain.render.V.rows(), 3);
+    enclosed << base.V, grain.render.V;  // the porous render surface bulges past the base in places
+    grain.simulation = make_template_cage(enclosed, *recipe.cage);
+  } else {
+    grain.simulation = make_simulation_mesh(base, recipe.simulation, mesh_seed);
+  }
+  grain.caged = recipe.cage.has_value();
   grain.timings.simulation_mesh = seconds_since(start);
 
   start = std::chrono::steady_clock::now();
@@ -74,6 +84,8 @@ Grain make_grain(const GrainRecipe& recipe, std::uint64_t seed, std::optional<do
   // Eq. 2, [x, y, z] = P [r, s, t]: a uniform scale, which leaves the embedding unchanged.
   grain.render.V *= grain.shape.swell;
   grain.simulation.V *= grain.shape.swell;
+  grain.base = base;
+  grain.base.V *= grain.shape.swell;
   grain.simulation_density = recipe.density * enclosed_volume(grain.render) / total_volume(grain.simulation);
   return grain;
 }
@@ -87,6 +99,10 @@ std::vector<GrainInstance> make_instances(int count, int variants, const Cultiva
     instance.rotation = uniform_rotation(random);
   }
   return instances;
+}
+
+CollisionSpheres fit_grain_collision_spheres(const Grain& grain) {
+  return grain.caged ? fit_collision_spheres(grain.base) : fit_collision_spheres(grain.simulation);
 }
 
 }  // namespace rice::grains

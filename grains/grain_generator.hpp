@@ -15,6 +15,8 @@
 #include "grains/embedding.hpp"
 #include "grains/porous_level_set.hpp"
 #include "grains/simulation_mesh.hpp"
+#include "grains/template_cage.hpp"
+#include "grains/collision_spheres.hpp"
 
 namespace rice::grains {
 
@@ -29,6 +31,9 @@ struct GrainRecipe {
   /// set's on every cultivar (0.2 lost 3% on slender basmati grains).
   double mesh_adaptivity = 0.05;
   SimulationMeshParameters simulation;
+  /// When set, the simulation mesh is a template cage enclosing the base surface
+  /// (template_cage.hpp) instead of Mesh_3's tetrahedralisation of it.
+  std::optional<TemplateCageParameters> cage;
   /// Density of a cooked grain's material [kg/m³]: about 1.1e3 (cooked rice kernels sink in
   /// water, and their water content of ~60% puts them between water and starch, 1.5e3);
   /// an ESTIMATE.
@@ -49,6 +54,8 @@ struct Grain {
   PorousLevelSet level_set;  ///< before the swell factor (grain frame, P = 1)
   SurfaceMesh render;      ///< swollen, grain frame
   VolumeMesh simulation;   ///< swollen, grain frame
+  SurfaceMesh base;        ///< the base surface the meshes follow, swollen, grain frame
+  bool caged = false;      ///< the simulation mesh is a template cage (larger than the grain)
   Embedding embedding;     ///< render vertices in the simulation tets
   /// Density to give the simulation mesh's lumped masses so that they total ρ·V_render (the
   /// porous render volume): ρ V_render / V_simulation [kg/m³].
@@ -58,6 +65,10 @@ struct Grain {
 
 /// Builds one grain; `swell` overrides the sampled P when given (instances use 1).
 Grain make_grain(const GrainRecipe& recipe, std::uint64_t seed, std::optional<double> swell = std::nullopt);
+
+/// The grain's collision spheres: fitted to its simulation mesh, or, for a cage, to its base
+/// surface.
+CollisionSpheres fit_grain_collision_spheres(const Grain& grain);
 
 /// One grain of a large set: which variant, its swell factor and its orientation.
 struct GrainInstance {

@@ -134,6 +134,9 @@ class StudyCommands : public CommandFamily {
         ->check(number_in(4, 10000))->capture_default_str();
     c->add_option("--max-vertices", s.max_vertices, "most vertices of the simulation mesh")
         ->check(number_in(4, 10000))->capture_default_str();
+    c->add_option("--cage-stations", s.cage_stations,
+                  "> 0: the simulation mesh is a template cage with this many diamonds along the grain (0: Mesh_3)")
+        ->check(number_in(0, 100))->capture_default_str();
     add(c, [this] { experiments::validate(grain_substeps_); },
         [this] { grain_substep_study_command(grain_substeps_, grain_substeps_out_); });
   }

@@ -30,7 +30,7 @@ void make_grains(const SceneGrains& settings, const grains::GrainRecipe& recipe,
   world.variants.resize(settings.variants);
   for_each_item("grain variants", settings.variants, [&](int i) {
     world.variants[i].grain = grains::make_grain(recipe, seeds[i], 1.0);
-    world.variants[i].spheres = grains::fit_collision_spheres(world.variants[i].grain.simulation);
+    world.variants[i].spheres = grains::fit_grain_collision_spheres(world.variants[i].grain);
   });
   world.instances = grains::make_instances(settings.count, settings.variants, recipe.cultivar, random);
   for (const GrainVariant& v : world.variants) {

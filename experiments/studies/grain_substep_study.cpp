@@ -17,7 +17,6 @@
 #include "experiments/io/csv_table.hpp"
 #include "experiments/io/progress.hpp"
 #include "experiments/io/run_info.hpp"
-#include "grains/collision_spheres.hpp"
 #include "grains/grain_generator.hpp"
 #include "xpbd/body.hpp"
 #include "xpbd/solver.hpp"
@@ -29,8 +28,10 @@ namespace {
 /// The grain as a soft body with its collision spheres, on a half-space collider at z = 0.
 void add_grain_on_spheres(xpbd::Model& model, const grains::Grain& grain, const xpbd::TetMesh& mesh,
                           const xpbd::LameParameters& material) {
-  const grains::CollisionSpheres spheres = grains::fit_collision_spheres({mesh.V, mesh.T});
-  xpbd::add_soft_body(model, mesh, grain.simulation_density, material, 0.0, {spheres.centres, spheres.radii});
+  const grains::CollisionSpheres spheres = grains::fit_grain_collision_spheres(grain);
+  const Eigen::RowVector3d lift = mesh.V.row(0) - grain.simulation.V.row(0);
+  xpbd::add_soft_body(model, mesh, grain.simulation_density, material, 0.0,
+                      {spheres.centres.rowwise() + lift, spheres.radii});
   xpbd::Collider ground;
   ground.static_friction = 0.5;
   ground.dynamic_friction = 0.4;
@@ -86,6 +87,8 @@ void validate(const GrainSubstepStudySettings& s) {
   if (s.setup.frames < 1) throw std::invalid_argument("grain-substeps: --frames must be >= 1");
   if (!(s.setup.young > 0.0)) throw std::invalid_argument("grain-substeps: --young must be > 0");
   if (!(s.setup.drop_height >= 0.0)) throw std::invalid_argument("grain-substeps: --drop-height must be >= 0");
+  if (s.cage_stations < 0 || s.cage_stations > 100)
+    throw std::invalid_argument("grain-substeps: --cage-stations must lie in [0, 100]");
   if (s.min_vertices < 4 || s.max_vertices < s.min_vertices)
     throw std::invalid_argument("grain-substeps: --mesh-vertices needs 4 <= MIN <= MAX");
 }
@@ -98,6 +101,7 @@ void grain_substep_study_command(const GrainSubstepStudySettings& s, const std::
   recipe.cultivar = grains::cultivar_by_name("japonica");
   recipe.simulation.min_vertices = s.min_vertices;
   recipe.simulation.max_vertices = s.max_vertices;
+  if (s.cage_stations > 0) recipe.cage = grains::TemplateCageParameters{.stations = s.cage_stations};
   const grains::Grain grain = grains::make_grain(recipe, s.seed);
   struct Job {
     xpbd::Method method;
@@ -163,6 +167,7 @@ plot for [i=1:words(X)] 'grain_substeps.csv' using (strcol(1) eq 'xpbd' && $3 ==
                                                            {"young_pa", cell(s.setup.young)},
                                                            {"drop_height_m", cell(s.setup.drop_height)},
                                                            {"contact", s.setup.on_spheres ? "collision spheres" : "particles"},
+                                                           {"simulation_mesh", s.cage_stations > 0 ? "template cage" : "Mesh_3"},
                                                            {"seed", cell(static_cast<long>(s.seed))},
                                                            {"vertices", cell(static_cast<long>(grain.simulation.V.rows()))},
                                                            {"tets", cell(static_cast<long>(grain.simulation.T.rows()))},

@@ -51,6 +51,7 @@ struct GrainSubstepStudySettings {
   unsigned seed = 3;   ///< of the grain
   /// Mesh_3's vertex range for the grain's simulation mesh (SimulationMeshParameters).
   int min_vertices = 20, max_vertices = 60;
+  int cage_stations = 0;  ///< > 0: a template cage of that many stations instead (template_cage.hpp)
 };
 
 /// Throws std::invalid_argument naming the setting and its range.
