@@ -11,12 +11,12 @@
 #include <vector>
 
 #include "grains/base_shape.hpp"
+#include "grains/collision_spheres.hpp"
 #include "grains/cultivar.hpp"
 #include "grains/embedding.hpp"
 #include "grains/porous_level_set.hpp"
 #include "grains/simulation_mesh.hpp"
 #include "grains/template_cage.hpp"
-#include "grains/collision_spheres.hpp"
 
 namespace rice::grains {
 

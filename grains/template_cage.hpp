@@ -8,12 +8,13 @@
 //   |y| / a + |z| / b ≤ k(x),
 // with k piecewise linear between the stations and 0 at the tips; a and b fix the diamond's
 // shape (the points' largest |y| and |z| times √2, so a diamond of k = 1 holds an ellipse of
-// those semi-axes). The k_j are the smallest that hold every point (fit_profile), so the cage
+// those semi-axes). The k_j are raised until every point lies inside (fit_profile), so the cage
 // encloses the grain, and the grain's embedding in it has no negative weight.
 //
 // Why by hand: Mesh_3 lands in a range of 8–12 vertices for two grains in eight
 // (`rice study grain-substeps`), and XPBD's stable step is set by the elements' size: a
-// template cage gives every grain the same few large elements.
+// template cage gives every grain the same few large elements. Measured, it does not buy the
+// larger step (docs/studies.md, grain-substeps), so it is a study option, not the scenes' mesh.
 #pragma once
 
 #include "grains/mesh_types.hpp"

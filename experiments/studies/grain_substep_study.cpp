@@ -53,7 +53,6 @@ GrainRestRun simulate_grain_at_rest(const grains::Grain& grain, const GrainRestS
     xpbd::add_neo_hookean_tets(model, mesh, material);
     model.ground = xpbd::GroundPlane{.static_friction = 0.5, .dynamic_friction = 0.4};
   }
-  const int frames = setup.frames;
   GrainRestRun run;
   run.method = method;
   run.substeps = substeps;
@@ -62,11 +61,11 @@ GrainRestRun simulate_grain_at_rest(const grains::Grain& grain, const GrainRestS
                               .method = method, .execution = xpbd::Execution::kSerial});
   const auto start = std::chrono::steady_clock::now();
   try {
-    for (int f = 0; f < frames; ++f) solver.step();
+    for (int f = 0; f < setup.frames; ++f) solver.step();
   } catch (const xpbd::SimulationError&) {
     run.finite = false;
   }
-  run.wall = seconds_since(start) / (frames / 60.0);
+  run.wall = seconds_since(start) / (setup.frames / 60.0);
   run.x = model.particles.x;
   if (run.finite) {
     run.fastest = model.particles.v.rowwise().norm().maxCoeff();
@@ -90,7 +89,7 @@ void validate(const GrainSubstepStudySettings& s) {
   if (s.cage_stations < 0 || s.cage_stations > 100)
     throw std::invalid_argument("grain-substeps: --cage-stations must lie in [0, 100]");
   if (s.min_vertices < 4 || s.max_vertices < s.min_vertices)
-    throw std::invalid_argument("grain-substeps: --mesh-vertices needs 4 <= MIN <= MAX");
+    throw std::invalid_argument("grain-substeps: need 4 <= --min-vertices <= --max-vertices");
 }
 
 void grain_substep_study_command(const GrainSubstepStudySettings& s, const std::filesystem::path& folder) {

@@ -84,7 +84,8 @@ Row measure(const MeshSetting& setting, std::uint64_t seed, const TetQualityStud
         row.mean_edge += edge / (6.0 * T.rows());
       }
   for (const int n : s.substeps) {
-    const GrainRestRun run = simulate_grain_at_rest(grain, {.young = s.young, .frames = s.frames}, xpbd::Method::kXpbd, n, s.iterations);
+    const GrainRestRun run =
+        simulate_grain_at_rest(grain, {.young = s.young, .frames = s.frames}, xpbd::Method::kXpbd, n, s.iterations);
     if (!run.stable()) continue;
     row.fewest_stable = n;
     row.wall = run.wall;
