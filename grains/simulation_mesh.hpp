@@ -17,8 +17,8 @@ namespace rice::grains {
 /// Mesh_3 criteria relative to the grain's bounding box, so one setting fits every cultivar
 /// (from bold japonica to basmati, seven times longer than thick). Mesh_3's vertex count for
 /// fixed criteria varies about fourfold with its random initial points, so the size and
-/// distance bounds are scaled together (by 1.2 per try, up to 8 tries) until the count lies in
-/// [min_vertices, max_vertices].
+/// distance bounds are scaled together (by 1.2 per try, then by bisection, then with the next
+/// seed; up to 24 tries) until the count lies in [min_vertices, max_vertices].
 struct SimulationMeshParameters {
   int min_vertices = 20;
   int max_vertices = 60;
@@ -42,7 +42,7 @@ const char* optimiser_name(SimulationMeshParameters::Optimiser optimiser);
 void validate(const SimulationMeshParameters& parameters);
 
 /// Tetrahedralises the inside of the closed surface `surface`; deterministic given `seed`.
-/// When no try lands in the vertex range, the last try is returned.
+/// When no try lands in the vertex range, the try nearest it is returned.
 VolumeMesh make_simulation_mesh(const SurfaceMesh& surface, const SimulationMeshParameters& parameters,
                                 std::uint64_t seed);
 

@@ -38,6 +38,46 @@ void add_grain_on_spheres(xpbd::Model& model, const grains::Grain& grain, const 
   model.colliders.push_back(ground);
 }
 
+/// The reference: the finest stable vertex-block-descent run (most substeps, then most
+/// iterations), or where none is stable (on spheres VBD creeps at 1-5 mm/s), the finest
+/// stable XPBD run; null where no run is stable.
+const GrainRestRun* finest_stable_run(const std::vector<GrainRestRun>& runs) {
+  const GrainRestRun* finest = nullptr;
+  for (const xpbd::Method method : {xpbd::Method::kVbd, xpbd::Method::kXpbd}) {
+    for (const GrainRestRun& r : runs)
+      if (r.method == method && r.stable() &&
+          (!finest || std::tie(r.substeps, r.iterations) > std::tie(finest->substeps, finest->iterations)))
+        finest = &r;
+    if (finest) return finest;
+  }
+  return nullptr;
+}
+
+/// grain_substeps.png from grain_substeps.csv: error against wall time, one colour and point
+/// type per method and K, each point labelled with its substep count N.
+void plot_grain_substeps(const std::filesystem::path& folder, const GrainSubstepStudySettings& s,
+                         const std::string& title, const GrainRestRun& reference) {
+  const auto words = [](const std::vector<int>& counts) {
+    std::string list;
+    for (const int k : counts) {
+      if (!list.empty()) list += ' ';
+      list += std::to_string(k);
+    }
+    return list;
+  };
+  const std::string reference_name = std::string(xpbd::method_name(reference.method)) + " N = " +
+                                     std::to_string(reference.substeps) + ", K = " + std::to_string(reference.iterations);
+  render_plot(folder, "grain_substeps", csv_plot_header("grain_substeps", 1200, 700) + kLogLogAxes + R"(set xlabel 'wall time per simulated second [s]'
+set ylabel 'RMS distance of the rest state to the reference run ()" + reference_name + R"() / grain length' noenhanced
+set title ")" + title + R"(" noenhanced
+set key bottom left
+X = ')" + words(s.xpbd_iterations) + R"('
+V = ')" + words(s.vbd_iterations) + R"('
+plot for [i=1:words(X)] 'grain_substeps.csv' using (strcol(1) eq 'xpbd' && $3 == word(X, i)+0 && $5 == 1 ? $9 : 1/0):8:(sprintf('%d', $2)) with labels point pt 7 lc i offset 0.8,0.8 title sprintf('XPBD, K = %s (labels: N)', word(X, i)), \
+     for [i=1:words(V)] 'grain_substeps.csv' using (strcol(1) eq 'vbd' && $3 == word(V, i)+0 && $5 == 1 ? $9 : 1/0):8:(sprintf('%d', $2)) with labels point pt (4 + i) lc (words(X) + i) offset 0.8,-0.8 title sprintf('vertex block descent, K = %s', word(V, i))
+)");
+}
+
 }  // namespace
 
 GrainRestRun simulate_grain_at_rest(const grains::Grain& grain, const GrainRestSetup& setup, xpbd::Method method,
@@ -115,12 +155,7 @@ void grain_substep_study_command(const GrainSubstepStudySettings& s, const std::
   for_each_item("grain-substeps", static_cast<int>(jobs.size()), [&](int j) {
     runs[j] = simulate_grain_at_rest(grain, s.setup, jobs[j].method, jobs[j].substeps, jobs[j].iterations);
   });
-  // The finest vertex-block-descent run (most substeps, then most iterations) is the reference.
-  const GrainRestRun* reference = nullptr;
-  for (const GrainRestRun& r : runs)
-    if (r.method == xpbd::Method::kVbd && r.stable() &&
-        (!reference || std::tie(r.substeps, r.iterations) > std::tie(reference->substeps, reference->iterations)))
-      reference = &r;
+  const GrainRestRun* reference = finest_stable_run(runs);
   const double length = (grain.simulation.V.colwise().maxCoeff() - grain.simulation.V.colwise().minCoeff()).maxCoeff();
   CsvTable table({"method", "substeps", "iterations", "h_s", "stable", "fastest_m_per_s", "min_volume_ratio",
                   "rms_error_rel", "wall_s_per_sim_s"});
@@ -142,24 +177,12 @@ void grain_substep_study_command(const GrainSubstepStudySettings& s, const std::
   const std::string title = "A soft grain at rest: XPBD stable from " + describe(largest_stable[0]) +
                             ", vertex block descent from " + describe(largest_stable[1]) + " substeps per frame";
   std::printf("\n%s\n", title.c_str());
-  const auto words = [](const std::vector<int>& counts) {
-    std::string list;
-    for (const int k : counts) {
-      if (!list.empty()) list += ' ';
-      list += std::to_string(k);
-    }
-    return list;
-  };
-  // One colour and point type per method and K; the labels are the substep counts N.
-  render_plot(folder, "grain_substeps", csv_plot_header("grain_substeps", 1200, 700) + kLogLogAxes + R"(set xlabel 'wall time per simulated second [s]'
-set ylabel 'RMS distance of the rest state to the finest VBD run / grain length'
-set title ")" + title + R"(" noenhanced
-set key bottom left
-X = ')" + words(s.xpbd_iterations) + R"('
-V = ')" + words(s.vbd_iterations) + R"('
-plot for [i=1:words(X)] 'grain_substeps.csv' using (strcol(1) eq 'xpbd' && $3 == word(X, i)+0 && $5 == 1 ? $9 : 1/0):8:(sprintf('%d', $2)) with labels point pt 7 lc i offset 0.8,0.8 title sprintf('XPBD, K = %s (labels: N)', word(X, i)), \
-     for [i=1:words(V)] 'grain_substeps.csv' using (strcol(1) eq 'vbd' && $3 == word(V, i)+0 && $5 == 1 ? $9 : 1/0):8:(sprintf('%d', $2)) with labels point pt (4 + i) lc (words(X) + i) offset 0.8,-0.8 title sprintf('vertex block descent, K = %s', word(V, i))
-)");
+  const auto plotted = std::count_if(runs.begin(), runs.end(),
+                                     [&](const GrainRestRun& r) { return r.stable() && &r != reference; });
+  if (plotted > 0)
+    plot_grain_substeps(folder, s, title, *reference);
+  else
+    std::printf("no plot: fewer than two runs came to rest\n");
   stop_point();
   write_file_atomically(folder / "run_info.txt", run_info({{"study", "grain-substeps"},
                                                            {"frames", cell(s.setup.frames)},
