@@ -19,6 +19,11 @@ void validate_grains_and_solver(const Scene& s) {
   check(scene_key("grains", "count"), s.grains.count);
   check(scene_key("grains", "variants"), s.grains.variants);
   check(scene_key("grains", "young_pa"), s.grains.young);
+  check(scene_key("grains", "min_vertices"), s.grains.min_vertices);
+  check(scene_key("grains", "max_vertices"), s.grains.max_vertices);
+  require(s.grains.min_vertices <= s.grains.max_vertices,
+          "need [grains] min_vertices <= max_vertices, got " + cell(s.grains.min_vertices) + " and " +
+              cell(s.grains.max_vertices));
   check(scene_key("grains", "poisson"), s.grains.poisson);
   check(scene_key("grains", "soak_minutes"), s.grains.soak_minutes);
   check(scene_key("grains", "soak_temperature_c"), s.grains.soak_temperature);

@@ -34,6 +34,8 @@ struct SceneGrains {
   std::uint64_t seed = 1;
   xpbd::BodyKind body = xpbd::BodyKind::kRigid;
   double young = 1e5;  ///< soft grains [Pa]: cooked rice kernels are soft (0.1–1 MPa; ESTIMATE)
+  /// Vertex range of a soft grain's simulation mesh (grains::SimulationMeshParameters).
+  int min_vertices = 20, max_vertices = 60;
   double poisson = 0.3;
   double soak_minutes = 120.0;     ///< sets damping (soft) and cohesion
   double soak_temperature = 10.0;  ///< [°C]

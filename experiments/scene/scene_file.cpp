@@ -73,6 +73,13 @@ void read_grains(TomlSection section, SceneGrains& g) {
   g.seed = static_cast<std::uint64_t>(section.integer("seed"));
   g.body = section.choice("body") == "soft" ? xpbd::BodyKind::kSoft : xpbd::BodyKind::kRigid;
   g.young = section.number("young_pa");
+  g.min_vertices = static_cast<int>(section.integer("min_vertices"));
+  g.max_vertices = static_cast<int>(section.integer("max_vertices"));
+  if (g.min_vertices > g.max_vertices) {
+    if (section.has("max_vertices"))
+      section.require(false, "max_vertices", "at least min_vertices (" + cell(g.min_vertices) + ")");
+    section.require(false, "min_vertices", "at most max_vertices (" + cell(g.max_vertices) + ")");
+  }
   g.poisson = section.number("poisson");
   g.soak_minutes = section.number("soak_minutes");
   g.soak_temperature = section.number("soak_temperature_c");

@@ -67,6 +67,11 @@ std::vector<SceneKey> scene_and_grain_keys() {
       choice("grains", "body", {"rigid", "soft"}, std::string("rigid"),
              "rigid bodies, or soft tet meshes with the stable Neo-Hookean material"),
       number("grains", "young_pa", closed(1e3, 1e9), 1e5, "soft grains' Young's modulus [Pa]"),
+      integer("grains", "min_vertices", closed(4, 1000), 20.0,
+              "the fewest vertices of a grain's simulation mesh (Mesh_3, grains/simulation_mesh.hpp): soft grains' tets; "
+              "rigid grains' collision spheres fit its surface"),
+      integer("grains", "max_vertices", closed(4, 1000), 60.0,
+              "the most vertices of a grain's simulation mesh; a coarser mesh takes larger XPBD steps"),
       number("grains", "poisson", open(-1, 0.5), 0.3, "soft grains' Poisson's ratio"),
       number("grains", "soak_minutes", open_low(0, 1e5), 120.0,
              "soaking time [min]: with the temperature it sets the water content, hence the damping (eq. 4) and "

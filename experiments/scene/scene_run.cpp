@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <string>
 
 #include "experiments/io/atomic_file.hpp"
 #include "experiments/io/csv_table.hpp"
@@ -22,6 +23,17 @@ namespace {
 
 using Observers = std::vector<std::unique_ptr<Observer>>;
 
+/// "fewest-most" vertices over the variants' simulation meshes.
+std::string mesh_vertex_range(const World& world) {
+  long fewest = 0, most = 0;
+  for (const GrainVariant& v : world.variants) {
+    const long n = v.grain.simulation.V.rows();
+    fewest = fewest == 0 ? n : std::min(fewest, n);
+    most = std::max(most, n);
+  }
+  return std::to_string(fewest) + "-" + std::to_string(most);
+}
+
 /// The scene's settings as it ran them, for run_info.txt.
 RunInfoEntries scene_entries(const Scene& scene, const World& world) {
   const bool plate = scene.container.kind == Container::kPlate;
@@ -39,6 +51,7 @@ RunInfoEntries scene_entries(const Scene& scene, const World& world) {
           {"frames", cell(scene.solver.frames)},
           {"fps", cell(scene.solver.fps)},
           {"young_pa", cell(scene.grains.young)},
+          {"mesh_vertices", mesh_vertex_range(world)},
           {"rayleigh_time_s", cell(world.rayleigh_time)},
           {"cohesion", scene.effects.cohesion ? "on" : "off"},
           {"damping", scene.effects.damping ? "on" : "off"},

@@ -100,6 +100,8 @@ World build_world(const Scene& scene, Emitter& emitter) {
   world.bowl = grains::scaled({}, scene.container.scale);
   grains::GrainRecipe recipe;
   recipe.cultivar = grains::cultivar_by_name(scene.grains.cultivar);
+  recipe.simulation.min_vertices = scene.grains.min_vertices;
+  recipe.simulation.max_vertices = scene.grains.max_vertices;
   make_grains(scene.grains, recipe, world);
   add_colliders(scene, world);
   emitter.lay_out(world);
