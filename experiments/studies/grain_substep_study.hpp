@@ -4,9 +4,9 @@
 // for `frames` frames at 60 fps with N substeps per frame. It touches the ground with its
 // particles (a ground plane), or, as in a scene, with its collision spheres (a half-space
 // collider and the contact solver). A run is stable when it stays finite, no tet inverts and
-// the grain is at rest at the end (fastest particle under 1 mm/s); its error is the RMS
-// distance of its final particles to those of the finest vertex-block-descent run, relative
-// to the grain's length. Writes grain_substeps.csv, grain_substeps.png and run_info.txt.
+// the grain is at rest at the end (no particle moved faster than 1 mm/s over the last frame);
+// its error is the RMS distance of its final particles to those of the finest stable
+// vertex-block-descent run (or XPBD run, where none is), relative to the grain's length. Writes grain_substeps.csv, grain_substeps.png and run_info.txt.
 #pragma once
 
 #include <filesystem>
@@ -22,7 +22,7 @@ struct GrainRestRun {
   xpbd::Method method;
   int substeps, iterations;
   bool finite = true;
-  double fastest = 0.0;       ///< fastest particle at the end [m/s]
+  double fastest = 0.0;       ///< fastest particle over the last frame, |Δx| / (1/60 s) [m/s]
   double volume_ratio = 0.0;  ///< smallest tet volume over its rest volume at the end
   double wall = 0.0;          ///< [s per simulated second]
   xpbd::Positions x;          ///< final positions

@@ -37,11 +37,12 @@ void expect_at_rest_on_ground(const GrainRestRun& run) {
   EXPECT_LT(run.x.col(2).minCoeff(), 1e-3);
 }
 
-void expect_rests_at(const grains::Grain& grain, int substeps) {
+void expect_rests_at(const grains::Grain& grain, int substeps, xpbd::Method method = xpbd::Method::kXpbd,
+                     int iterations = 1) {
   for (const bool on_spheres : {false, true}) {
     SCOPED_TRACE(on_spheres ? "on spheres" : "on particles");
     const GrainRestSetup setup{.frames = 120, .drop_height = 0.01, .on_spheres = on_spheres};
-    expect_at_rest_on_ground(simulate_grain_at_rest(grain, setup, xpbd::Method::kXpbd, substeps, 1));
+    expect_at_rest_on_ground(simulate_grain_at_rest(grain, setup, method, substeps, iterations));
   }
 }
 
@@ -50,6 +51,12 @@ TEST(GrainRest, DefaultMeshComesToRestAtTheStudysStableStepOnParticlesAndOnSpher
   const grains::Grain grain = japonica_on("japonica_seed3_default.mesh");
   ASSERT_EQ(grain.simulation.V.rows(), 20);
   expect_rests_at(grain, 160);
+}
+
+TEST(GrainRest, VertexBlockDescentComesToRestOnItsSpheresAtTheSameStep) {
+  // Its particles jitter by 0.3 µm between substeps, 1.6 mm/s read as the last substep's
+  // velocity (once taken for creep); over the last frame they move slower than 1 mm/s.
+  expect_rests_at(japonica_on("japonica_seed3_default.mesh"), 80, xpbd::Method::kVbd, 5);
 }
 
 TEST(GrainRest, CoarseMeshComesToRestAtTwiceTheStep) {
