@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "experiments/io/csv_table.hpp"
+#include "experiments/scene/stepper.hpp"
 #include "xpbd/body.hpp"
 #include "xpbd/tet_stencil.hpp"
 
@@ -34,7 +35,8 @@ double ImpactObserver::mean_principal_strain(const World& world) const {
   return volume > 0.0 ? strain / volume : 0.0;
 }
 
-void ImpactObserver::observe(const World& world, const Stepper&, int frame, double) {
+void ImpactObserver::observe(const World& world, const Stepper& stepper, int frame, double) {
+  if (stepper.time() < drop_time_) return;
   for (int g = 0; g < world.released; ++g) {
     const double z = world.centre(g).z();
     lowest_[g] = std::min(lowest_[g], z);

@@ -1,4 +1,6 @@
-// A dropped clump's impact (paper Fig. 10; on for the clump emitter, off and free otherwise):
+// A dropped clump's impact (paper Fig. 10), from the time it is let go: on for the clump
+// emitter (from the start) and for grains filled into a cup that is then taken away from under
+// them (from its removal; scene_parts.hpp, drop_time), off and free otherwise:
 //  - rebound: for each grain, the most its centre rose above the lowest point it had reached,
 //    h_g = max_t (z_g(t) − min_{s≤t} z_g(s)); the mean over the grains;
 //  - deformation, soft grains only: each frame, the mean over the grains' tets (by rest volume)
@@ -17,6 +19,8 @@ namespace rice::experiments {
 
 class ImpactObserver : public Observer {
  public:
+  /// Watches from `drop_time` [s] on.
+  explicit ImpactObserver(double drop_time) : drop_time_(drop_time) {}
   void begin(const World& world) override;
   void observe(const World& world, const Stepper& stepper, int frame, double wall_seconds) override;
   void end(const World& world, const Stepper& stepper, SceneReport& report) override;
@@ -27,6 +31,7 @@ class ImpactObserver : public Observer {
 
   std::vector<int> body_of_tet_;  ///< model.neo_hookean[t]'s grain
   std::vector<double> lowest_, rebound_;
+  double drop_time_;
   double peak_strain_ = 0.0;
   int peak_frame_ = 0;
 };

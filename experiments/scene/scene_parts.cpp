@@ -1,6 +1,8 @@
 // The parts of a scene run; see scene_parts.hpp.
 #include "experiments/scene/scene_parts.hpp"
 
+#include <cmath>
+
 #include "experiments/scene/clump_emitter.hpp"
 #include "experiments/scene/fill_emitter.hpp"
 #include "experiments/scene/frames_observer.hpp"
@@ -23,6 +25,15 @@ std::unique_ptr<Emitter> make_emitter(const Scene& scene) {
   return nullptr;
 }
 
+std::optional<double> drop_time(const Scene& scene) {
+  if (scene.emitter.kind == EmitterKind::kClump) return 0.0;
+  if (scene.emitter.kind != EmitterKind::kFill) return std::nullopt;
+  // A mould held above the ground (a cup) drops its grains when it is taken away.
+  const xpbd::Collider& mould = scene.mesh_colliders[scene.emitter.mould].collider;
+  if (!std::isfinite(mould.removal_time) || !(xpbd::collider_pose(mould, mould.removal_time).translation.z() > 0.0)) return std::nullopt;
+  return mould.removal_time;
+}
+
 std::vector<std::unique_ptr<Observer>> make_observers(const Scene& scene, const std::filesystem::path& folder) {
   std::vector<std::unique_ptr<Observer>> observers;
   observers.push_back(std::make_unique<SceneGeometryObserver>(folder, scene.container.kind == Container::kChawan));
@@ -30,7 +41,7 @@ std::vector<std::unique_ptr<Observer>> make_observers(const Scene& scene, const 
   observers.push_back(std::make_unique<FramesObserver>(folder));
   if (scene.effects.render_meshes) observers.push_back(std::make_unique<RenderMeshObserver>(folder));
   observers.push_back(std::make_unique<PileObserver>(folder, scene));
-  if (scene.emitter.kind == EmitterKind::kClump) observers.push_back(std::make_unique<ImpactObserver>());
+  if (const std::optional<double> drop = drop_time(scene)) observers.push_back(std::make_unique<ImpactObserver>(*drop));
   observers.push_back(std::make_unique<SectionObserver>(folder, scene));
   return observers;
 }

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "experiments/scene/emitter.hpp"
@@ -14,6 +15,10 @@
 namespace rice::experiments {
 
 std::unique_ptr<Emitter> make_emitter(const Scene& scene);
+
+/// When the scene drops its grains as a block: 0 for the clump emitter; for a fill whose mould
+/// stands above the ground (a cup), the mould's removal; none otherwise.
+std::optional<double> drop_time(const Scene& scene);
 
 /// The observers of a run writing into `folder`, in the order they are called.
 std::vector<std::unique_ptr<Observer>> make_observers(const Scene& scene, const std::filesystem::path& folder);

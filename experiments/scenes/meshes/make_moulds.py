@@ -70,3 +70,5 @@ write_prism(here / "onigiri_lid.obj", rounded_outline(triangle(side - 2 * math.s
 length, width, corner = 0.05, 0.022, 0.008  # shari: an oblong [m]
 write_prism(here / "shari_mould.obj", rounded_outline(oblong(length, width), corner), 0.04)
 write_prism(here / "shari_lid.obj", rounded_outline(oblong(length - 2 * GAP, width - 2 * GAP), corner - GAP), 0.01)
+side, corner = 0.024, 0.008  # drop cup: a rounded square [m], filled and then taken away from under the grains
+write_prism(here / "drop_cup.obj", rounded_outline(oblong(side, side), corner), 0.04)

@@ -81,6 +81,23 @@ TEST(Observers, ARunWritesAStatsRowAndAPoseFilePerFrameAndItsMeasures) {
   EXPECT_EQ(files_with(meshes / "frames", ".ply"), 4);
 }
 
+TEST(ImpactObserver, WatchesAClumpFromTheStartAndACupFromItsRemovalAndNothingElse) {
+  Scene scene;
+  scene.emitter.kind = EmitterKind::kClump;
+  EXPECT_EQ(drop_time(scene), 0.0);
+  scene.emitter.kind = EmitterKind::kSpout;
+  EXPECT_EQ(drop_time(scene), std::nullopt);
+  scene.emitter.kind = EmitterKind::kFill;
+  scene.emitter.mould = 0;
+  scene.mesh_colliders.resize(1);
+  xpbd::Collider& mould = scene.mesh_colliders[0].collider;
+  EXPECT_EQ(drop_time(scene), std::nullopt);  // a mould never taken away
+  mould.removal_time = 2.0;
+  EXPECT_EQ(drop_time(scene), std::nullopt);  // a mould on the ground (shari): the grains stay
+  mould.motion.front().translation.z() = 0.03;
+  EXPECT_EQ(drop_time(scene), 2.0);  // a cup 3 cm up
+}
+
 TEST(ImpactObserver, MeasuresTheRiseAboveTheLowestPointAndTheLargestPrincipalStrain) {
   Scene scene;
   scene.container.kind = Container::kPlate;
@@ -92,7 +109,7 @@ TEST(ImpactObserver, MeasuresTheRiseAboveTheLowestPointAndTheLargestPrincipalStr
   World world = build_world(scene, clump);
   clump.emit(world, 0.0);
   const Stepper stepper(world.model, scene);
-  ImpactObserver impact;
+  ImpactObserver impact(0.0);
   impact.begin(world);
   // Grain 0 falls 3 mm, rises 0.5 mm, falls 1 mm more and rises 0.2 mm: its rebound is 0.5 mm.
   // Grain 1 only falls. Then grain 0 is stretched by 2% in every direction: σ_i = 1.02, while
@@ -121,6 +138,13 @@ TEST(ImpactObserver, MeasuresTheRiseAboveTheLowestPointAndTheLargestPrincipalStr
   EXPECT_NE(std::find(report.info.begin(), report.info.end(),
                       std::pair<std::string, std::string>{"peak_principal_strain_frame", "5"}),
             report.info.end());
+  // Watching from 1 s, it sees nothing of the stretched grain at t = 0.
+  ImpactObserver later(1.0);
+  later.begin(world);
+  later.observe(world, stepper, 1, 0.0);
+  SceneReport before_the_drop;
+  later.end(world, stepper, before_the_drop);
+  EXPECT_EQ(before_the_drop.result.peak_strain, 0.0);
 }
 
 }  // namespace
