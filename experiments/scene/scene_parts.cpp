@@ -30,8 +30,9 @@ std::optional<double> drop_time(const Scene& scene) {
   if (scene.emitter.kind != EmitterKind::kFill) return std::nullopt;
   // A mould held above the ground (a cup) drops its grains when it is taken away.
   const xpbd::Collider& mould = scene.mesh_colliders[scene.emitter.mould].collider;
-  if (!std::isfinite(mould.removal_time) || !(xpbd::collider_pose(mould, mould.removal_time).translation.z() > 0.0)) return std::nullopt;
-  return mould.removal_time;
+  if (!std::isfinite(mould.removal_time)) return std::nullopt;
+  const bool raised = xpbd::collider_pose(mould, mould.removal_time).translation.z() > 0.0;
+  return raised ? std::optional(mould.removal_time) : std::nullopt;
 }
 
 std::vector<std::unique_ptr<Observer>> make_observers(const Scene& scene, const std::filesystem::path& folder) {
