@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 #include "experiments/render/render_command.hpp"
 #include "experiments/render/run_frames.hpp"
@@ -18,7 +19,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// A short soft run on a plate, with its render meshes written every frame.
+/// A short soft run on a plate, with its render meshes written every frame, in a folder of
+/// the test's own: CTest runs these tests in parallel processes, and a shared folder was
+/// removed by one while another read it ("grains.csv: cannot be read").
 fs::path soft_run() {
   static const fs::path folder = [] {
     Scene scene;
@@ -29,7 +32,8 @@ fs::path soft_run() {
     scene.grains.variants = 2;
     scene.solver.frames = 3;
     scene.effects.render_meshes = true;
-    const fs::path out = fs::path(RICE_TEST_SCRATCH) / "run-frames-soft";
+    const fs::path out = fs::path(RICE_TEST_SCRATCH) /
+                         ("run-frames-soft-" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(out);
     run_scene(scene, out);
     return out;
