@@ -60,8 +60,9 @@ int add_rigid_body(Model& model, const TetMesh& mesh, double density, const Sphe
 /// Adds a soft body: the mesh's vertices as new particles (lumped masses), one Neo-Hookean
 /// pair per tet (add_neo_hookean_tets) and the collision spheres embedded in the tets that
 /// hold their centres (the nearest tet for a centre outside the mesh). Returns its index.
+/// `rayleigh_time` and `strain_rate_time`: the tets' two dampings (add_neo_hookean_tets).
 int add_soft_body(Model& model, const TetMesh& mesh, double density, const LameParameters& material,
-                  double rayleigh_time, const SphereSet& spheres);
+                  double rayleigh_time, const SphereSet& spheres, double strain_rate_time = 0.0);
 
 /// Centre of mass: the rigid body's x, or the mass-weighted mean of a soft body's particles.
 Vec3 body_centre(const Model& model, const Body& body);

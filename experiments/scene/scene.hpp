@@ -59,6 +59,11 @@ struct SceneSolver {
   /// projections. Experimental: cohesive bonds stay projections after each sweep, and with
   /// them a pile gains energy (docs/known-limits.md; without cohesion it settles).
   bool vertex_block_descent = false;
+  /// Vertex block descent: the soak's damping time τ (eq. 4) as the convex strain-rate
+  /// damping (xpbd/strain_rate_damping.hpp), or false: as the paper's Rayleigh damping of the
+  /// Neo-Hookean constraints, which vertex block descent minimises with a line search and
+  /// which gains energy at τ ≫ h. XPBD always takes the paper's.
+  bool vbd_strain_rate_damping = true;
 };
 
 /// [container]: what holds the grains.

@@ -93,6 +93,9 @@ void read_solver(TomlSection section, SceneSolver& s, xpbd::BodyKind body) {
   s.substeps = static_cast<int>(section.integer("substeps"));
   s.iterations = static_cast<int>(section.integer("iterations"));
   s.vertex_block_descent = section.choice("method") == "vbd";
+  s.vbd_strain_rate_damping = section.choice("vbd_damping") == "strain-rate";
+  section.require(s.vertex_block_descent || !section.has("vbd_damping"), "vbd_damping",
+                  "given only with method = 'vbd' (XPBD takes the paper's Rayleigh damping)");
   section.require(!s.vertex_block_descent || body == xpbd::BodyKind::kSoft, "method",
                   "'xpbd' for rigid grains (vertex block descent moves soft grains' particles)");
   section.finish();

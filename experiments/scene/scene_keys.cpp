@@ -88,6 +88,9 @@ std::vector<SceneKey> solver_container_emitter_keys() {
       integer("solver", "frames", closed(1, 100000), 180.0, "frames simulated"),
       integer("solver", "substeps", closed(0, 10000), 0.0, "substeps per frame; 0: 80 for rigid grains, 480 for soft"),
       integer("solver", "iterations", closed(1, 1000), 1.0, "Gauss–Seidel sweeps per substep"),
+      choice("solver", "vbd_damping", {"strain-rate", "constraint"}, std::string("strain-rate"),
+             "vbd: the soak's damping time (eq. 4) as the convex strain-rate damping, or as the paper's Rayleigh "
+             "damping of the constraints (XPBD always takes the paper's)"),
       choice("solver", "method", {"xpbd", "vbd"}, std::string("xpbd"),
              "soft grains by XPBD or by vertex block descent (vbd: soft grains only)"),
       choice("container", "kind", {"chawan", "plate"}, std::string("chawan"),

@@ -91,6 +91,7 @@ min_vertices = 8
 max_vertices = 12
 [solver]
 method = "vbd"
+vbd_damping = "constraint"
 frames = 7
 [container]
 kind = "plate"
@@ -105,6 +106,7 @@ damping = false
   EXPECT_EQ(scene.grains.min_vertices, 8);
   EXPECT_EQ(scene.grains.max_vertices, 12);
   EXPECT_TRUE(scene.solver.vertex_block_descent);
+  EXPECT_FALSE(scene.solver.vbd_strain_rate_damping);
   EXPECT_EQ(scene.solver.frames, 7);
   EXPECT_EQ(scene.container.kind, Container::kPlate);
   EXPECT_EQ(scene.effects.static_friction, 0.0);
@@ -141,6 +143,7 @@ TEST(SceneFile, MistakesNameTheFileTheLineAndTheKey) {
       {"[grains]\ncultivar = \"basmati\"\n", "bad.toml:2: [grains] cultivar = \"basmati\": expected one of 'japonica'"},
       {"[solver]\nfps = nan\n", "bad.toml:2: [solver] fps = nan: expected a number in (0, 1000]"},
       {"[solver]\nmethod = \"vbd\"\n", "bad.toml:2: [solver] method = \"vbd\": expected 'xpbd' for rigid grains"},
+      {"[solver]\nvbd_damping = \"constraint\"\n", "bad.toml:2: [solver] vbd_damping = \"constraint\": expected given only with method = 'vbd'"},
       {"[effects]\nstatic_friction = 0.3\ndynamic_friction = 0.4\n",
        "bad.toml:3: [effects] dynamic_friction = 0.4: expected at most static_friction"},
       {"[effects]\nstatic_friction = 0.3\n", "bad.toml:2: [effects] static_friction = 0.3: expected at least dynamic_friction"},

@@ -61,6 +61,32 @@ TEST(WorldBuilder, EffectsTheSceneLeavesOffAreOffInTheModel) {
   EXPECT_EQ(off.model.bodies[0].bond_strength, 0.0);
 }
 
+TEST(WorldBuilder, VertexBlockDescentTakesTheSoaksDampingAsStrainRateDampingUnlessAskedForThePapers) {
+  Scene scene;
+  scene.container.kind = Container::kPlate;
+  scene.grains.count = 1;
+  scene.grains.variants = 1;
+  scene.grains.body = xpbd::BodyKind::kSoft;
+  const auto tet_of = [&scene] {
+    SpoutEmitter emitter(scene.emitter, scene.container);
+    const World world = build_world(scene, emitter);
+    EXPECT_GT(world.rayleigh_time, 0.0);
+    return std::pair(world.model.neo_hookean.front(), world.rayleigh_time);
+  };
+  const auto [xpbd_tet, tau] = tet_of();  // XPBD: the paper's Rayleigh damping of the constraints
+  EXPECT_GT(xpbd_tet.beta_deviatoric, 0.0);
+  EXPECT_EQ(xpbd_tet.strain_rate_damping, 0.0);
+  scene.solver.vertex_block_descent = true;
+  const auto [vbd_tet, vbd_tau] = tet_of();
+  EXPECT_EQ(vbd_tet.beta_deviatoric, 0.0);
+  EXPECT_EQ(vbd_tet.beta_hydrostatic, 0.0);
+  EXPECT_EQ(vbd_tet.strain_rate_damping, vbd_tau);
+  scene.solver.vbd_strain_rate_damping = false;
+  const auto [paper_tet, paper_tau] = tet_of();
+  EXPECT_EQ(paper_tet.beta_deviatoric, xpbd_tet.beta_deviatoric);
+  EXPECT_EQ(paper_tet.strain_rate_damping, 0.0);
+}
+
 TEST(World, ARigidGrainsRenderMeshRidesItsPose) {
   Scene scene;
   scene.container.kind = Container::kPlate;
