@@ -56,8 +56,8 @@ struct SceneSolver {
   int substeps = 0;
   int iterations = 1;
   /// Soft grains' tets by vertex block descent (xpbd::Method::kVbd) instead of XPBD's
-  /// projections. Experimental: cohesive bonds stay projections after each sweep, and with
-  /// them a pile gains energy (docs/known-limits.md; without cohesion it settles).
+  /// projections; contacts, friction and cohesive bonds are terms of its particles' steps
+  /// (xpbd/particle_contacts.hpp).
   bool vertex_block_descent = false;
   /// Vertex block descent: the soak's damping time τ (eq. 4) as the convex strain-rate
   /// damping (xpbd/strain_rate_damping.hpp), or false: as the paper's Rayleigh damping of the
