@@ -39,12 +39,18 @@ TEST(WorldBuilder, BuildsEveryGrainParkedAndAsleepBesideTheCollidersInOrder) {
   }
 }
 
-TEST(WorldBuilder, EffectsTheSceneLeavesOffAreOffInTheModel) {
+/// `count` soft grains of one variant on a plate.
+Scene soft_grains_on_a_plate(int count) {
   Scene scene;
   scene.container.kind = Container::kPlate;
-  scene.grains.count = 2;
+  scene.grains.count = count;
   scene.grains.variants = 1;
   scene.grains.body = xpbd::BodyKind::kSoft;
+  return scene;
+}
+
+TEST(WorldBuilder, EffectsTheSceneLeavesOffAreOffInTheModel) {
+  Scene scene = soft_grains_on_a_plate(2);
   SpoutEmitter on_emitter(scene.emitter, scene.container);
   const World on = build_world(scene, on_emitter);
   EXPECT_GT(on.rayleigh_time, 0.0);
@@ -62,27 +68,25 @@ TEST(WorldBuilder, EffectsTheSceneLeavesOffAreOffInTheModel) {
 }
 
 TEST(WorldBuilder, VertexBlockDescentTakesTheSoaksDampingAsStrainRateDampingUnlessAskedForThePapers) {
-  Scene scene;
-  scene.container.kind = Container::kPlate;
-  scene.grains.count = 1;
-  scene.grains.variants = 1;
-  scene.grains.body = xpbd::BodyKind::kSoft;
-  const auto tet_of = [&scene] {
+  Scene scene = soft_grains_on_a_plate(1);
+  double tau = 0.0;
+  const auto first_tet = [&] {
     SpoutEmitter emitter(scene.emitter, scene.container);
     const World world = build_world(scene, emitter);
-    EXPECT_GT(world.rayleigh_time, 0.0);
-    return std::pair(world.model.neo_hookean.front(), world.rayleigh_time);
+    tau = world.rayleigh_time;
+    return world.model.neo_hookean.front();
   };
-  const auto [xpbd_tet, tau] = tet_of();  // XPBD: the paper's Rayleigh damping of the constraints
+  const xpbd::NeoHookeanTet xpbd_tet = first_tet();  // XPBD: the paper's Rayleigh damping of the constraints
+  EXPECT_GT(tau, 0.0);
   EXPECT_GT(xpbd_tet.beta_deviatoric, 0.0);
   EXPECT_EQ(xpbd_tet.strain_rate_damping, 0.0);
   scene.solver.vertex_block_descent = true;
-  const auto [vbd_tet, vbd_tau] = tet_of();
+  const xpbd::NeoHookeanTet vbd_tet = first_tet();
   EXPECT_EQ(vbd_tet.beta_deviatoric, 0.0);
   EXPECT_EQ(vbd_tet.beta_hydrostatic, 0.0);
-  EXPECT_EQ(vbd_tet.strain_rate_damping, vbd_tau);
+  EXPECT_EQ(vbd_tet.strain_rate_damping, tau);
   scene.solver.vbd_strain_rate_damping = false;
-  const auto [paper_tet, paper_tau] = tet_of();
+  const xpbd::NeoHookeanTet paper_tet = first_tet();
   EXPECT_EQ(paper_tet.beta_deviatoric, xpbd_tet.beta_deviatoric);
   EXPECT_EQ(paper_tet.strain_rate_damping, 0.0);
 }
