@@ -1,10 +1,11 @@
 // `rice table 1` (paper Table 1): the shari, chawan, onigiri and bunny scenes
-// (experiments/scenes/*.toml) at the paper's grain counts and 180 frames, each run into its
-// own folder, and table1.csv / table1.md side by side with the paper's times: our simulation
-// time (the scene as it ships: soft grains), the same scene's with rigid grains, the paper's
-// and their ratio, and how many grains the emitter placed; our render time at the scene's preview setting and, with
-// `full`, at the paper's 3840 × 2160 and 800 samples per pixel; and what each scene simulates
-// and renders.
+// (experiments/scenes/*.toml) at the paper's grain counts and 180 frames, each run three times
+// into its own folders: as it ships (soft grains by XPBD), by vertex block descent, and with
+// rigid grains. table1.csv / table1.md set the simulation times side by side with the paper's
+// and their ratio; the render time at the scene's preview setting and, with `full`, at the
+// paper's 3840 × 2160 and 800 samples per pixel; and what each scene simulates and renders.
+// table1_runs.csv says how each run ended: grains placed and awake, the shape's top before
+// and after the mould goes, packing and the deepest overlap.
 #pragma once
 
 #include <filesystem>

@@ -59,9 +59,21 @@ TEST(Table1, RunsTheFourScenesAndSetsTheirTimesBesideThePapers) {
   ASSERT_EQ(rows.size(), 5u);  // the header and shari, chawan, onigiri, bunny
   EXPECT_TRUE(rows[1].starts_with("14,shari,12,12,270,3,"));  // grains, grains placed, the paper's, frames
   EXPECT_TRUE(rows[4].starts_with("17,bunny,12,12,3600,3,"));
-  for (const std::string& row : rows) EXPECT_EQ(std::count(row.begin(), row.end(), ','), 16) << row;
+  for (const std::string& row : rows) EXPECT_EQ(std::count(row.begin(), row.end(), ','), 17) << row;
   EXPECT_TRUE(std::filesystem::exists(out / "table1.md"));
-  EXPECT_TRUE(std::filesystem::exists(out / "shari_rigid" / "stats.csv"));  // the rigid column's run
+  // each scene also ran by vertex block descent and with rigid grains, in folders of their own
+  const auto text = [](const std::filesystem::path& file) {
+    std::ifstream in(file);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_NE(text(out / "shari_vbd" / "scene.toml").find("#   solver.method=\"vbd\""), std::string::npos);
+  EXPECT_NE(text(out / "shari_rigid" / "scene.toml").find("#   grains.body=\"rigid\""), std::string::npos);
+  std::ifstream ended(out / "table1_runs.csv");
+  rows.clear();
+  while (std::getline(ended, line)) rows.push_back(line);
+  ASSERT_EQ(rows.size(), 13u);  // the header and three runs of each scene
+  EXPECT_TRUE(rows[2].starts_with("shari,soft by VBD 10x5,12,")) << rows[2];  // 12 grains in
+
   EXPECT_TRUE(std::filesystem::exists(out / "onigiri" / "render" / "render.png"));
 }
 
