@@ -251,6 +251,20 @@ TEST(Colliders, KeyframesInterpolateAndBadCollidersAreRefused) {
   EXPECT_THROW(validate(bad, 3), std::invalid_argument);
 }
 
+TEST(Colliders, AColliderHeldBetweenTwoEqualKeyframesHasExactlyThatPose) {
+  // A lid held before it presses: (1 − s) a + s a is not a in the last bit, and a pose that
+  // differs by a bit is a collider in motion, which wakes every grain it reaches each substep.
+  Collider held;
+  const ColliderKeyframe pose{0.0, Vec3(0.0, 0.0, 0.1155), Quat(Eigen::AngleAxisd(-0.5 * M_PI, Vec3::UnitX()))};
+  held.motion = {pose, pose, {4.0, Vec3(0.0, 0.0, 0.2), Quat::Identity()}};
+  held.motion[1].time = 3.3;
+  for (const double t : {0.1, 0.7, 1.3, 2.9, 3.2999}) {
+    const ColliderKeyframe at = collider_pose(held, t);
+    EXPECT_TRUE(at.translation == pose.translation) << t;
+    EXPECT_TRUE(at.rotation.coeffs() == pose.rotation.coeffs()) << t;
+  }
+}
+
 }  // namespace
 }  // namespace rice::xpbd
 
