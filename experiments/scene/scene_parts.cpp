@@ -25,14 +25,23 @@ std::unique_ptr<Emitter> make_emitter(const Scene& scene) {
   return nullptr;
 }
 
+double lowest_point(const MeshCollider& mould, double time) {
+  const xpbd::ColliderKeyframe pose = xpbd::collider_pose(mould.collider, time);
+  double lowest = INFINITY;
+  for (int v = 0; v < mould.mesh.V.rows(); ++v)
+    lowest = std::min(lowest, (pose.translation + pose.rotation * mould.mesh.V.row(v).transpose()).z());
+  return lowest;
+}
+
 std::optional<double> drop_time(const Scene& scene) {
   if (scene.emitter.kind == EmitterKind::kClump) return 0.0;
   if (scene.emitter.kind != EmitterKind::kFill) return std::nullopt;
   // A mould held above the ground (a cup) drops its grains when it is taken away.
-  const xpbd::Collider& mould = scene.mesh_colliders[scene.emitter.mould].collider;
-  if (!std::isfinite(mould.removal_time)) return std::nullopt;
-  const bool raised = xpbd::collider_pose(mould, mould.removal_time).translation.z() > 0.0;
-  return raised ? std::optional(mould.removal_time) : std::nullopt;
+  const MeshCollider& mould = scene.mesh_colliders[scene.emitter.mould];
+  const double removal = mould.collider.removal_time;
+  if (!std::isfinite(removal)) return std::nullopt;
+  // Its lowest point then more than 5 mm (about a grain) above the ground, z = 0.
+  return lowest_point(mould, removal) > 5e-3 ? std::optional(removal) : std::nullopt;
 }
 
 std::vector<std::unique_ptr<Observer>> make_observers(const Scene& scene, const std::filesystem::path& folder) {

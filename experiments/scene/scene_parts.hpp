@@ -16,8 +16,12 @@ namespace rice::experiments {
 
 std::unique_ptr<Emitter> make_emitter(const Scene& scene);
 
+/// The lowest point of a mesh collider at a time [m].
+double lowest_point(const MeshCollider& mould, double time);
+
 /// When the scene drops its grains as a block: 0 for the clump emitter; for a fill whose mould
-/// stands above the ground (a cup), the mould's removal; none otherwise.
+/// is held above the ground when it goes (a cup), the mould's removal; none otherwise (a
+/// mould standing on the ground, whatever its frame's origin).
 std::optional<double> drop_time(const Scene& scene);
 
 /// The observers of a run writing into `folder`, in the order they are called.

@@ -90,12 +90,16 @@ TEST(ImpactObserver, WatchesAClumpFromTheStartAndACupFromItsRemovalAndNothingEls
   scene.emitter.kind = EmitterKind::kFill;
   scene.emitter.mould = 0;
   scene.mesh_colliders.resize(1);
+  scene.mesh_colliders[0].mesh.V = grains::Vertices{{-0.01, -0.01, -0.01}, {0.01, 0.01, 0.01}};  // 2 cm across
   xpbd::Collider& mould = scene.mesh_colliders[0].collider;
   EXPECT_EQ(drop_time(scene), std::nullopt);  // a mould never taken away
   mould.removal_time = 2.0;
-  EXPECT_EQ(drop_time(scene), std::nullopt);  // a mould on the ground (shari): the grains stay
-  mould.motion.front().translation.z() = 0.03;
+  mould.motion.front().translation.z() = 0.01;
+  EXPECT_EQ(drop_time(scene), std::nullopt);  // on the ground (shari, the bunny): the grains stay
+  mould.motion.front().translation.z() = 0.04;
   EXPECT_EQ(drop_time(scene), 2.0);  // a cup 3 cm up
+  mould.motion = {mould.motion.front(), {1.0, xpbd::Vec3(0.0, 0.0, 0.01), xpbd::Quat::Identity()}};
+  EXPECT_EQ(drop_time(scene), std::nullopt);  // set down before it goes
 }
 
 TEST(ImpactObserver, MeasuresTheRiseAboveTheLowestPointAndTheLargestPrincipalStrain) {
