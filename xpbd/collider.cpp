@@ -44,7 +44,7 @@ ColliderKeyframe collider_pose(const Collider& collider, double time) {
   // Held between two equal poses: exactly that pose, so that the collider is at rest there
   // ((1 − s) a + s a differs from a in the last bit, and a collider in motion wakes what it
   // reaches).
-  if (a.translation == b.translation && a.rotation.coeffs() == b.rotation.coeffs()) return {time, a.translation, a.rotation};
+  if (same_pose(a, b)) return {time, a.translation, a.rotation};
   const double s = (time - a.time) / (b.time - a.time);
   return {time, (1.0 - s) * a.translation + s * b.translation, a.rotation.slerp(s, b.rotation)};
 }

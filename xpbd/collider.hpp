@@ -49,6 +49,11 @@ struct Collider {
 /// Whether the collider is there at time t (before its removal time).
 inline bool collider_present(const Collider& collider, double time) { return time < collider.removal_time; }
 
+/// Whether two poses are the same to the bit (a collider between them is at rest).
+inline bool same_pose(const ColliderKeyframe& a, const ColliderKeyframe& b) {
+  return a.translation == b.translation && a.rotation.coeffs() == b.rotation.coeffs();
+}
+
 /// The collider's pose at time t.
 ColliderKeyframe collider_pose(const Collider& collider, double time);
 

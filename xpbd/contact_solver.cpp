@@ -18,9 +18,6 @@ Vec3 to_world(const ColliderKeyframe& pose, const Vec3& local) { return pose.tra
 Vec3 to_local(const ColliderKeyframe& pose, const Vec3& world) {
   return pose.rotation.conjugate() * (world - pose.translation);
 }
-bool same_pose(const ColliderKeyframe& a, const ColliderKeyframe& b) {
-  return a.translation == b.translation && a.rotation.coeffs() == b.rotation.coeffs();
-}
 
 }  // namespace
 

@@ -25,6 +25,9 @@ std::unique_ptr<Emitter> make_emitter(const Scene& scene) {
   return nullptr;
 }
 
+namespace {
+
+/// The lowest point of a mesh collider at a time [m].
 double lowest_point(const MeshCollider& mould, double time) {
   const xpbd::ColliderKeyframe pose = xpbd::collider_pose(mould.collider, time);
   double lowest = INFINITY;
@@ -32,6 +35,8 @@ double lowest_point(const MeshCollider& mould, double time) {
     lowest = std::min(lowest, (pose.translation + pose.rotation * mould.mesh.V.row(v).transpose()).z());
   return lowest;
 }
+
+}  // namespace
 
 std::optional<double> drop_time(const Scene& scene) {
   if (scene.emitter.kind == EmitterKind::kClump) return 0.0;

@@ -16,9 +16,6 @@ namespace rice::experiments {
 
 std::unique_ptr<Emitter> make_emitter(const Scene& scene);
 
-/// The lowest point of a mesh collider at a time [m].
-double lowest_point(const MeshCollider& mould, double time);
-
 /// When the scene drops its grains as a block: 0 for the clump emitter; for a fill whose mould
 /// is held above the ground when it goes (a cup), the mould's removal; none otherwise (a
 /// mould standing on the ground, whatever its frame's origin).
