@@ -10,13 +10,17 @@
 namespace rice::experiments {
 namespace {
 
-/// φ of the collider's room at p, in its pose at time 0 (> 0 inside the room).
+/// φ of the collider's room at p, in room_pose (> 0 inside the room).
 double room_at(const xpbd::Collider& room, const xpbd::Vec3& p) {
-  const xpbd::ColliderKeyframe pose = xpbd::collider_pose(room, 0.0);
+  const xpbd::ColliderKeyframe pose = room_pose(room);
   return xpbd::local_signed_distance(room, pose.rotation.conjugate() * (p - pose.translation)).distance;
 }
 
 }  // namespace
+
+xpbd::ColliderKeyframe room_pose(const xpbd::Collider& room) {
+  return xpbd::collider_pose(room, room.removal_time);  // past the last keyframe: the last
+}
 
 SectionObserver::SectionObserver(const std::filesystem::path& folder, const Scene& scene)
     : folder_(folder),

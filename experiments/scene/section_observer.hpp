@@ -14,6 +14,10 @@
 
 namespace rice::experiments {
 
+/// The pose in which a mould's room counts its grains: its last before it is taken away (a
+/// mould may be turned over first, as the bunny's is), or at the end of its keyframes.
+xpbd::ColliderKeyframe room_pose(const xpbd::Collider& room);
+
 class SectionObserver : public Observer {
  public:
   SectionObserver(const std::filesystem::path& folder, const Scene& scene);

@@ -12,6 +12,7 @@
 #include "experiments/scene/render_mesh_observer.hpp"
 #include "experiments/scene/scene_parts.hpp"
 #include "experiments/scene/scene_run.hpp"
+#include "experiments/scene/section_observer.hpp"
 #include "experiments/scene/stepper.hpp"
 #include "experiments/scene/world_builder.hpp"
 
@@ -48,6 +49,22 @@ TEST(Observers, OnlyTheEffectsASceneCallsForAreObserved) {
   EXPECT_EQ(render_mesh_observers(scene), 0);
   scene.effects.render_meshes = true;
   EXPECT_EQ(render_mesh_observers(scene), 1);
+}
+
+TEST(Observers, AMouldsRoomCountsItsGrainsInItsLastPoseBeforeItGoes) {
+  // Turned over from 1 s to 2 s and taken away at 3 s, as the bunny's mould is: its grains are
+  // in the turned room (in its pose at time 0 none of them were).
+  xpbd::Collider mould;
+  mould.motion = {{0.0, xpbd::Vec3(0, 0, 0.06), xpbd::Quat::Identity()},
+                  {1.0, xpbd::Vec3(0, 0, 0.06), xpbd::Quat::Identity()},
+                  {2.0, xpbd::Vec3(0, 0, 0.05), xpbd::Quat(Eigen::AngleAxisd(M_PI, xpbd::Vec3::UnitX()))}};
+  mould.removal_time = 3.0;
+  EXPECT_EQ(room_pose(mould).translation, xpbd::Vec3(0, 0, 0.05));
+  EXPECT_NEAR(room_pose(mould).rotation.angularDistance(mould.motion.back().rotation), 0.0, 1e-12);
+  mould.removal_time = 1.5;  // taken away half way through the turn
+  EXPECT_NEAR(room_pose(mould).translation.z(), 0.055, 1e-12);
+  mould.removal_time = INFINITY;  // never taken away: where its keyframes leave it
+  EXPECT_EQ(room_pose(mould).translation, xpbd::Vec3(0, 0, 0.05));
 }
 
 TEST(Observers, ARunWritesAStatsRowAndAPoseFilePerFrameAndItsMeasures) {
