@@ -18,7 +18,9 @@
 // instead pulls together two anchors, the material points of either side that touched when
 // sticking began, so that what one Gauss–Seidel sweep leaves over does not add up into creep;
 // they start to slide when the net friction impulse of their contacts over a broad-phase
-// interval exceeds μ_s Σλ_n (end_substep).
+// interval exceeds μ_s Σλ_n (end_substep). A sticking contact keeps its anchors through a
+// substep off the surface; back on it, friction takes back the slip of that flight up to
+// μ_k λ_n (else a sphere chattering at the substep rate slides without friction).
 // Normals are projected for all contacts before friction, so friction sees the sweep's normal
 // impulses. After the velocity update, contacts that pushed lose their relative normal
 // velocity (restitution 0). Cohesive bonds (cohesion_bonds.hpp) form at touching contacts of
@@ -96,6 +98,7 @@ class ContactSolver {
     std::array<int, 4> key;  ///< (a, b, s_a, s_b)
     bool sliding = false;
     bool anchored = false;  ///< sticking, with anchors (material coordinates on a and b)
+    bool flown = false;     ///< anchored, and off the surface for a substep since
     Vec3 anchor_a = Vec3::Zero(), anchor_b = Vec3::Zero();
     double interval_normal = 0.0;             ///< Σλ_n over the interval's substeps so far
     Vec3 interval_friction = Vec3::Zero();    ///< Σ friction impulses over them

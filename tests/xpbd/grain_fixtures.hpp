@@ -60,6 +60,16 @@ inline Vec3 linear_momentum(const Model& model) {
   return p;
 }
 
+/// Total mass of bodies and free particles, the weights of linear_momentum.
+inline double total_mass(const Model& model) {
+  double m = 0.0;
+  for (int i = 0; i < model.particles.size(); ++i)
+    if (model.particles.w[i] > 0.0) m += 1.0 / model.particles.w[i];
+  for (const RigidBody& b : model.rigid_bodies)
+    if (b.inverse_mass > 0.0) m += 1.0 / b.inverse_mass;
+  return m;
+}
+
 /// A collider at rest.
 inline Collider half_space(const Vec3& normal, double offset, double mu_s, double mu_k) {
   Collider c;
