@@ -14,6 +14,7 @@
 #include "experiments/io/progress.hpp"
 #include "experiments/io/render_images.hpp"
 #include "experiments/io/run_info.hpp"
+#include "experiments/render/framing_box.hpp"
 #include "experiments/render/run_frames.hpp"
 #include "experiments/render/scene_pieces.hpp"
 #include "grains/mesh_io.hpp"
@@ -80,7 +81,7 @@ shading::Lights lights_of(const RenderCommandSettings& s) {
 
 /// The meshes given, each its own prototype: in place, or side by side along x.
 void add_mesh_files(shading::RenderScene& scene, const std::vector<std::filesystem::path>& files, bool side_by_side,
-                    Eigen::AlignedBox3d& box) {
+                    std::vector<Eigen::AlignedBox3d>& boxes) {
   Progress progress("render: meshes and curvature", static_cast<int>(files.size()));
   double next_x = 0.0;  // side by side: the next mesh's left edge
   for (size_t i = 0; i < files.size(); ++i) {
@@ -93,6 +94,7 @@ void add_mesh_files(shading::RenderScene& scene, const std::vector<std::filesyst
       next_x += 1.15 * (hi.x() - lo.x());
     }
     scene.add_instance(add_grain_prototype(scene, mesh.V, mesh.F), place, 0);
+    Eigen::AlignedBox3d& box = boxes.emplace_back();
     for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) box.extend(place * mesh.V.row(v).transpose());
     progress.update(static_cast<int>(i + 1));
   }
@@ -136,13 +138,13 @@ struct RenderTotals {
 void render_image(const RenderCommandSettings& s, const RenderInputs& in, int k, std::optional<shading::Camera>& camera,
                   const std::filesystem::path& folder, RenderTotals& totals) {
   shading::RenderScene scene;
-  Eigen::AlignedBox3d grains_box;
+  std::vector<Eigen::AlignedBox3d> grain_boxes;
   if (!s.run.empty()) {
-    add_run_grains(scene, s.run, in.variants, in.frames[k], grains_box, s.soft_curvature);
+    add_run_grains(scene, s.run, in.variants, in.frames[k], grain_boxes, s.soft_curvature);
   } else {
-    add_mesh_files(scene, in.files, s.side_by_side, grains_box);
+    add_mesh_files(scene, in.files, s.side_by_side, grain_boxes);
   }
-  const Eigen::AlignedBox3d box = add_bowl_and_ground(scene, s, grains_box);
+  const Eigen::AlignedBox3d box = add_bowl_and_ground(scene, s, framing_box(grain_boxes));
   scene.commit();
   if (!camera) {
     const double aspect = static_cast<double>(s.render.width) / s.render.height;

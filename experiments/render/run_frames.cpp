@@ -70,13 +70,16 @@ bool in_scene(const NumericCsv& frame, const std::vector<double>& row) {
   return !marked || value(frame, row, "in_scene") != 0.0;
 }
 
-void grow(Eigen::AlignedBox3d& box, const grains::Vertices& V, const Eigen::Affine3d& place) {
+/// The box of every 16th vertex of V placed.
+Eigen::AlignedBox3d placed_box(const grains::Vertices& V, const Eigen::Affine3d& place) {
+  Eigen::AlignedBox3d box;
   for (Eigen::Index v = 0; v < V.rows(); v += 16) box.extend(place * V.row(v).transpose());
+  return box;
 }
 
 /// One row per grain: pose (c, q), the render mesh at c + q (drop + P R p − c₀).
 void add_rigid_grains(shading::RenderScene& scene, const NumericCsv& grains_csv, const NumericCsv& frame,
-                      const RunVariants& variants, Eigen::AlignedBox3d& box) {
+                      const RunVariants& variants, std::vector<Eigen::AlignedBox3d>& boxes) {
   if (frame.rows.size() != grains_csv.rows.size())
     throw std::runtime_error("render: " + frame.path.string() + " has " + std::to_string(frame.rows.size()) +
                              " grains, grains.csv " + std::to_string(grains_csv.rows.size()));
@@ -97,7 +100,7 @@ void add_rigid_grains(shading::RenderScene& scene, const NumericCsv& grains_csv,
     const Eigen::Affine3d place = Eigen::Translation3d(c) * q.normalized() * Eigen::Translation3d(drop - c0) *
                                   R.normalized() * Eigen::Scaling(value(grains_csv, a, "swell"));
     scene.add_instance(prototype[variant], place, 0);
-    grow(box, variants.meshes[variant].V, place);
+    boxes.push_back(placed_box(variants.meshes[variant].V, place));
   }
 }
 
@@ -122,13 +125,14 @@ grains::Vertices simulation_vertices(const NumericCsv& frame, size_t g, Eigen::I
 
 /// Each soft grain its own mesh, shaded with `curvature`.
 void add_soft_grains(shading::RenderScene& scene, const NumericCsv& grains_csv, const NumericCsv& frame,
-                     const RunVariants& variants, SoftCurvature curvature, Eigen::AlignedBox3d& box) {
+                     const RunVariants& variants, SoftCurvature curvature,
+                     std::vector<Eigen::AlignedBox3d>& boxes) {
   for (const SoftGrain& grain : soft_run_grains(grains_csv, frame, variants)) {
     const Eigen::VectorXd H = curvature == SoftCurvature::kRest
                                   ? Eigen::VectorXd(variants.curvature[grain.variant] / grain.swell)
                                   : shading::vertex_mean_curvature(grain.mesh.V, grain.mesh.F);
     scene.add_instance(scene.add_prototype(grain.mesh.V, grain.mesh.F, H), Eigen::Affine3d::Identity(), 0);
-    grow(box, grain.mesh.V, Eigen::Affine3d::Identity());
+    boxes.push_back(placed_box(grain.mesh.V, Eigen::Affine3d::Identity()));
   }
 }
 
@@ -159,14 +163,15 @@ std::vector<SoftGrain> soft_run_grains(const NumericCsv& grains_csv, const Numer
 }
 
 void add_run_grains(shading::RenderScene& scene, const std::filesystem::path& run, const RunVariants& variants,
-                    const std::filesystem::path& frame, Eigen::AlignedBox3d& box, SoftCurvature curvature) {
+                    const std::filesystem::path& frame, std::vector<Eigen::AlignedBox3d>& boxes,
+                    SoftCurvature curvature) {
   const NumericCsv grains_csv = read_numeric_csv(run / "grains.csv");
   const NumericCsv poses = read_numeric_csv(frame);
   const bool soft = std::find(poses.columns.begin(), poses.columns.end(), "vertex") != poses.columns.end();
   if (soft) {
-    add_soft_grains(scene, grains_csv, poses, variants, curvature, box);
+    add_soft_grains(scene, grains_csv, poses, variants, curvature, boxes);
   } else {
-    add_rigid_grains(scene, grains_csv, poses, variants, box);
+    add_rigid_grains(scene, grains_csv, poses, variants, boxes);
   }
 }
 

@@ -54,11 +54,11 @@ std::vector<SoftGrain> soft_run_grains(const NumericCsv& grains_csv, const Numer
                                        const RunVariants& variants);
 
 /// Adds the grains in the scene at `frame` (those still parked are left out), with material 0,
-/// and grows `box` by them: a rigid run's as instances of the variants, a soft run's each as its
+/// and appends each one's box to `boxes`: a rigid run's as instances of the variants, a soft run's each as its
 /// own deformed mesh. Throws std::runtime_error naming the file for a frame that does not
 /// match grains.csv or the variants.
 void add_run_grains(shading::RenderScene& scene, const std::filesystem::path& run, const RunVariants& variants,
-                    const std::filesystem::path& frame, Eigen::AlignedBox3d& box,
+                    const std::filesystem::path& frame, std::vector<Eigen::AlignedBox3d>& boxes,
                     SoftCurvature curvature = SoftCurvature::kRest);
 
 }  // namespace rice::experiments
