@@ -20,7 +20,8 @@
 // they start to slide when the net friction impulse of their contacts over a broad-phase
 // interval exceeds μ_s Σλ_n (end_substep). A sticking contact keeps its anchors through a
 // substep off the surface; back on it, friction takes back the slip of that flight up to
-// μ_k λ_n (else a sphere chattering at the substep rate slides without friction).
+// μ_k λ_n (else a sphere chattering at the substep rate slides without friction); what it
+// could not take back has slid, and the anchors start again there.
 // Normals are projected for all contacts before friction, so friction sees the sweep's normal
 // impulses. After the velocity update, contacts that pushed lose their relative normal
 // velocity (restitution 0). Cohesive bonds (cohesion_bonds.hpp) form at touching contacts of
@@ -141,6 +142,7 @@ class ContactSolver {
   void push(const Contact& contact, const ContactPoints& p, const Vec3& impulse);
   Vec3 tangential_slip(const Contact& contact, const ContactPoints& p, const Positions& x_previous) const;
   Vec3 anchored_slip(ContactState& state, const ContactPoints& p, const Positions& x_previous) const;
+  void restart_anchors(ContactState& state, const ContactPoints& p) const;
   /// How far any point of body b can move in `span` seconds from `time`, with leeway for what
   /// contacts add: 1.5 s span + ½ |g| span², s the speed of its fastest point (rigid:
   /// |v| + |ω| r_max; soft: of its sphere centres since the last broad phase, at the first the

@@ -295,11 +295,24 @@ TEST_P(GrainContact, RidesAMovingPlateByStaticFriction) {
   EXPECT_GT(body_centre(model, grain).x(), 0.9 * 0.1);  // it travelled with the plate (1 s at 0.1 m/s)
 }
 
+/// One contact substep [time, time + h] whose prediction moves `grain` by `step`; returns how
+/// far the contacts then moved its centre.
+Vec3 contact_substep(Model& model, ContactSolver& contacts, int grain, double time, double h, const Vec3& step) {
+  const Positions start = model.particles.x;
+  model.particles.x.rowwise() += step.transpose();
+  const Vec3 predicted = body_centre(model, grain);
+  contacts.begin_substep(time, h, start);
+  contacts.project(start);
+  contacts.end_substep(false);
+  return body_centre(model, grain) - predicted;
+}
+
 TEST(GrainContact, FrictionTakesBackTheSlipOfAFlightBetweenTwoTouches) {
-  // A soft grain's spheres chattering on a plane at the substep rate: forward d and up off it
-  // in one substep, straight down onto it in the next. Friction, when they touch again, takes
-  // back the flight's slip, up to μ_k λ_n. (Anchored only when they touched, it saw no slip, and
-  // in press.toml a bonded pair slid away over the plate at a constant 7.7 cm/s.)
+  // A soft grain's spheres chattering on a plane at the substep rate: down onto it in one
+  // substep, forward d and up off it in the next, straight down onto it in the third. Friction,
+  // when they touch again, takes back the flight's slip, up to μ_k λ_n. (Its anchors reset in
+  // the flight, it saw no slip, and in press.toml a bonded pair slid away over the plate at a
+  // constant 7.7 cm/s.)
   Model model;
   const int grain = add_grain(model, BodyKind::kSoft, Vec3::Zero());  // its spheres on z = 0
   Collider plane;
@@ -308,24 +321,45 @@ TEST(GrainContact, FrictionTakesBackTheSlipOfAFlightBetweenTwoTouches) {
   model.colliders.push_back(plane);
   ContactSolver contacts(model);
   const double h = 1e-4, d = 5e-6, lift = 1e-6;
-  Positions& x = model.particles.x;
-  contacts.find_candidates(0.0, 2 * h);
-  const Positions x0 = x;
-  x.rowwise() += Eigen::RowVector3d(d, 0.0, lift);  // the flight
-  contacts.begin_substep(0.0, h, x0);
-  contacts.project(x0);
-  contacts.end_substep(false);
-  const Positions x1 = x;
-  x.rowwise() += Eigen::RowVector3d(0.0, 0.0, -2.0 * lift);  // the touch, 1 µm into the plane
-  const Vec3 before = body_centre(model, grain);
-  contacts.begin_substep(h, h, x1);
-  contacts.project(x1);
-  contacts.end_substep(true);
-  const Vec3 moved = body_centre(model, grain) - before;
+  contacts.find_candidates(0.0, 7 * h);
+  const auto substep = [&](int k, const Vec3& step) { return contact_substep(model, contacts, grain, k * h, h, step); };
+  ASSERT_GT(substep(0, Vec3(0.0, 0.0, -lift)).z(), 0.9 * lift);  // the first touch, anchored
+  ASSERT_EQ(substep(1, Vec3(d, 0.0, lift)), Vec3::Zero());        // the flight
+  const Vec3 moved = substep(2, Vec3(0.0, 0.0, -2.0 * lift));    // the touch, 1 µm into the plane
   ASSERT_GT(moved.z(), 0.0);  // pushed out
   // Each contact's friction impulse is μ_k its normal one, through the same weights.
   EXPECT_NEAR(-moved.x(), 0.4 * moved.z(), 1e-6 * moved.z());
   EXPECT_NEAR(moved.y(), 0.0, 1e-12);
+  // What friction could not take back has slid, and the anchors start again there: the next
+  // flight's slip counts (anchors dropped, it went uncounted), and after a flight straight up
+  // a touch straight down finds none (anchors kept, it took more of the first flight back).
+  ASSERT_EQ(substep(3, Vec3(d, 0.0, lift + moved.z())), Vec3::Zero());
+  const Vec3 again = substep(4, Vec3(0.0, 0.0, -2.0 * lift));
+  EXPECT_NEAR(-again.x(), 0.4 * again.z(), 1e-6 * again.z());
+  ASSERT_EQ(substep(5, Vec3(0.0, 0.0, lift + again.z())), Vec3::Zero());
+  const Vec3 third = substep(6, Vec3(0.0, 0.0, -2.0 * lift));
+  ASSERT_GT(third.z(), 0.0);
+  EXPECT_NEAR(third.x(), 0.0, 1e-12);
+}
+
+TEST(GrainContact, FrictionSeesNoSlipBeforeTheFirstTouch) {
+  // A soft grain gliding in sideways d above a plane, then down onto it: its first touch has
+  // slipped nothing. (Anchored in the glide, friction took d back on landing; in a shari such
+  // anchors, a gap apart, kept a 0.5 mm overlap and 97 of 270 grains awake.)
+  Model model;
+  const int grain = add_grain(model, BodyKind::kSoft, Vec3(0.0, 0.0, 2e-6));  // 2 µm up
+  Collider plane;
+  plane.static_friction = 0.5;
+  plane.dynamic_friction = 0.4;
+  model.colliders.push_back(plane);
+  ContactSolver contacts(model);
+  const double h = 1e-4, d = 5e-6;
+  contacts.find_candidates(0.0, 2 * h);
+  const auto substep = [&](int k, const Vec3& step) { return contact_substep(model, contacts, grain, k * h, h, step); };
+  ASSERT_EQ(substep(0, Vec3(d, 0.0, -1e-6)), Vec3::Zero());  // the glide, 1 µm above
+  const Vec3 moved = substep(1, Vec3(0.0, 0.0, -2e-6));      // the landing, 1 µm in
+  ASSERT_GT(moved.z(), 0.0);
+  EXPECT_NEAR(moved.x(), 0.0, 1e-12);
 }
 
 TEST(BroadPhase, FindsExactlyTheOverlappingPairs) {
