@@ -410,6 +410,75 @@ TEST_P(GrainContact, ABondAboveTheWeightHoldsAHangingGrainAndOneBelowBreaks) {
   EXPECT_EQ(bonds, 0);
 }
 
+TEST(GrainContact, AGrainWokenByAMovingColliderMeetsItsSleepingNeighbour) {
+  // Two soft grains stacked on the ground, asleep; a box comes down at 5 cm/s and presses the
+  // top one 0.2 mm. The box wakes it, and its contacts with the sleeping grain under it come
+  // with it. (Looked for before the box woke it, the pair of two sleeping grains was skipped
+  // for the broad-phase interval, and the box pushed one grain 0.13 mm into the other.)
+  Model model;
+  model.sleep.enabled = true;
+  model.contact.cohesion = true;  // sphere on sphere, the top grain would roll off
+  add_grain(model, BodyKind::kSoft, Vec3::Zero());
+  add_grain(model, BodyKind::kSoft, Vec3(0.0, 0.0, kGrainThickness));
+  const double weight = kGrainDensity * kGrainLength * kGrainWidth * kGrainThickness * 9.81;
+  for (Body& body : model.bodies) body.bond_strength = 20.0 * weight;
+  model.colliders.push_back(half_space(Vec3::UnitZ(), 0.0, 0.5, 0.4));
+  Collider box;
+  box.shape = ColliderShape::kBox;
+  box.half_extents = Vec3(0.01, 0.01, 0.002);
+  const Vec3 above(0.5 * kGrainLength, 0.5 * kGrainWidth, 2.0 * kGrainThickness + box.half_extents.z());
+  box.motion = {{0.0, above + Vec3(0.0, 0.0, 5e-3), Quat::Identity()},
+                {2.0, above + Vec3(0.0, 0.0, 5e-3), Quat::Identity()},
+                {2.104, above - Vec3(0.0, 0.0, 2e-4), Quat::Identity()}};
+  model.colliders.push_back(box);
+  Solver solver(model, scene_settings(BodyKind::kSoft, 1.0 / 30.0, 80));
+  while (solver.time() < 2.0 - 1e-9) solver.step();
+  ASSERT_TRUE(model.bodies[0].asleep && model.bodies[1].asleep);
+  const double top = body_centre(model, 1).z();
+  double deepest = 0.0;
+  bool woke = false;
+  while (solver.time() < 2.3) {
+    solver.step();
+    deepest = std::max(deepest, solver.contacts()->statistics().max_penetration);
+    woke = woke || !model.bodies[1].asleep;
+  }
+  EXPECT_TRUE(woke);
+  EXPECT_LT(body_centre(model, 1).z(), top - 1e-4);  // pressed
+  EXPECT_LT(deepest, 5e-5);  // pressed, about 2e-5
+}
+
+TEST(GrainContact, AGrainPushedByAMovingColliderMeetsANeighbourAGapAway) {
+  // Two soft grains asleep side by side on the ground, 0.1 mm apart; a wall comes in at 5 cm/s
+  // and pushes the first 0.3 mm, into the second. The wall can push a grain as far as it
+  // moves in a broad-phase interval (0.25 mm), so the pushed grain's neighbours that far away
+  // are candidates. (With only its own motion bound, zero at rest, the pair was not, and the
+  // first grain went into the second.)
+  Model model;
+  model.sleep.enabled = true;
+  add_grain(model, BodyKind::kSoft, Vec3::Zero());
+  add_grain(model, BodyKind::kSoft, Vec3(0.0, kGrainWidth + 1e-4, 0.0));
+  model.colliders.push_back(half_space(Vec3::UnitZ(), 0.0, 0.5, 0.4));
+  Collider wall;
+  wall.shape = ColliderShape::kBox;
+  wall.half_extents = Vec3(0.01, 0.002, 0.005);
+  const Vec3 touching(0.5 * kGrainLength, -wall.half_extents.y(), 0.0);  // its face on the grain
+  wall.motion = {{0.0, touching - Vec3(0.0, 1e-3, 0.0), Quat::Identity()},
+                 {2.0, touching - Vec3(0.0, 1e-3, 0.0), Quat::Identity()},
+                 {2.026, touching + Vec3(0.0, 3e-4, 0.0), Quat::Identity()}};
+  model.colliders.push_back(wall);
+  Solver solver(model, scene_settings(BodyKind::kSoft, 1.0 / 30.0, 80));
+  while (solver.time() < 2.0 - 1e-9) solver.step();
+  ASSERT_TRUE(model.bodies[0].asleep && model.bodies[1].asleep);
+  const double second = body_centre(model, 1).y();
+  double deepest = 0.0;
+  while (solver.time() < 2.2) {
+    solver.step();
+    deepest = std::max(deepest, solver.contacts()->statistics().max_penetration);
+  }
+  EXPECT_GT(body_centre(model, 1).y(), second + 1e-4);  // pushed on by the first
+  EXPECT_LT(deepest, 5e-5);
+}
+
 TEST_P(GrainContact, BondsOfTwoSleepingGrainsHoldWithoutForce) {
   // A grain stacked on another on the ground, bonded at 20 weights, both falling asleep: a
   // bond whose two bodies sleep moves nothing and carries no force, so it keeps (a bond
