@@ -131,12 +131,14 @@ class ContactSolver {
     Vec3 n, pa, pb, pb_start = Vec3::Zero();
   };
 
-  /// The broad phase's steps (find_candidates): candidate sphere pairs of bodies and colliders
-  /// (which grows the box padding `pad` of each body a moving collider reaches by how far it
-  /// moves there), then of overlapping body boxes, both appended to sphere_pairs_; and the
-  /// contact states of body pairs still in reach.
+  /// The broad phase's steps (find_candidates): candidate sphere pairs of bodies and the
+  /// colliders in motion (`moving_ones`; which grows the box padding `pad` of each body one
+  /// reaches by how far it moves there), of overlapping body boxes, and of bodies and the
+  /// colliders at rest, all appended to sphere_pairs_; and the contact states of body pairs
+  /// still in reach.
   std::vector<BodyPair> body_candidates(const std::vector<std::pair<int, int>>& pairs, const std::vector<double>& pad);
-  void add_collider_candidates(double time, double span, std::vector<double>& pad, std::vector<BodyPair>& found);
+  void add_collider_candidates(double time, double span, std::vector<double>& pad, std::vector<BodyPair>& found,
+                               bool moving_ones);
   void keep_states_in_reach();
   ContactPoints locate(const Contact& contact) const;
   double inverse_mass(const Contact& contact, const ContactPoints& p, const Vec3& direction) const;
