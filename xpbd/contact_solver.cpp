@@ -542,14 +542,7 @@ void ContactSolver::solve_velocities() {
   }
 }
 
-void ContactSolver::end_substep(bool end_of_interval) {
-  // Particle contacts: the multiplier step λ ← max(0, λ − k C), once a substep, carried to the
-  // next (once a sweep, it overshot: a grain on a plane at h = 1/60 s rang at ±100% of its weight).
-  // Their friction's too, λ_t ← f_t, and whether each slides (particle_contacts.hpp).
-  if (particle_steps_) {
-    particle_contacts_.update_forces(model_.particles.x);
-    if (bonds_) bonds_->take_particle_forces(particle_contacts_, model_.particles.x, h_);
-  }
+size_t ContactSolver::end_pair_substep(size_t first, bool end_of_interval, double& deepest) {
   // Coulomb's law for a body pair (or a body and a collider) over all its contacts. A sticking
   // pair, whose friction cancelled its slip in full, starts to slide when the net friction
   // impulse over the broad-phase interval |Σ f_t| exceeded μ_s Σλ_n; summing over substeps keeps
@@ -558,63 +551,72 @@ void ContactSolver::end_substep(bool end_of_interval) {
   // sticks again once one touching contact stopped its slip within μ_k λ_n. Judging the
   // pair, not each contact, keeps the contact that Gauss–Seidel visits first, which sees the
   // whole slip, from deciding for all.
+  const auto& key = states_[contacts_[first].state].key;
+  const bool sliding = states_[contacts_[first].state].sliding;
+  const double mu_s = static_friction(key[1]);
+  size_t last = first;
+  bool touching = false, stuck = false;
+  double normal = 0.0;
+  Vec3 friction = Vec3::Zero();
+  for (; last < contacts_.size(); ++last) {
+    const Contact& contact = contacts_[last];
+    ContactState& state = states_[contact.state];
+    if (state.key[0] != key[0] || state.key[1] != key[1]) break;
+    const ContactPoints p = locate(contact);
+    deepest = std::max(deepest, -p.n.dot(p.pa - p.pb));
+    if (is_collider(key[1]))
+      collider_impulses_[collider_index(key[1])] -= (contact.lambda_normal * p.n + contact.friction) / h_;
+    state.interval_normal += contact.lambda_normal;
+    state.interval_friction += contact.friction;
+    normal += state.interval_normal;
+    friction += state.interval_friction;
+    if (contact.lambda_normal == 0.0) continue;
+    touching = true;
+    stuck = stuck || !contact.capped;
+  }
+  const bool slides =
+      has_friction_ && touching && (sliding ? !stuck : end_of_interval && friction.norm() > mu_s * normal);
+  // Held in the particles' steps, the pair slides when every one of its touching contacts
+  // ended the substep on its cone, and sticks when one lay inside. (Judged contact by contact,
+  // a grain set on a plane tilted to 0.9 μ_s saw three of its ten contacts reach the cone,
+  // slide at μ_k, hand their load to the others, and the whole grain slid away.)
+  bool held_touching = false, all_on_cone = true;
+  for (size_t c = first; c < last; ++c) {
+    if (contacts_[c].particle_contact < 0) continue;
+    const ParticleContact& held = particle_contacts_.contacts()[contacts_[c].particle_contact];
+    if (held.force == 0.0) continue;
+    held_touching = true;
+    all_on_cone = all_on_cone && held.sliding;
+  }
+  for (size_t c = first; c < last; ++c) {
+    ContactState& state = states_[contacts_[c].state];
+    state.sliding = slides;
+    // Anchors go when the pair slides; they stay through a flight (flown), and start again
+    // where the contact is when friction could not take the slip back (restart_anchors).
+    state.anchored = state.anchored && !slides;
+    if (state.anchored && contacts_[c].capped) restart_anchors(state, locate(contacts_[c]));
+    state.flown = state.anchored && contacts_[c].lambda_normal == 0.0;
+    if (contacts_[c].particle_contact < 0) continue;
+    const ParticleContact& held = particle_contacts_.contacts()[contacts_[c].particle_contact];
+    state.particle_force = held.force;
+    state.friction_force = held.friction_force;
+    state.sliding = held_touching && all_on_cone;
+  }
+  return last;
+}
+
+void ContactSolver::end_substep(bool end_of_interval) {
+  // Particle contacts: the multiplier step λ ← max(0, λ − k C), once a substep, carried to the
+  // next (once a sweep, it overshot: a grain on a plane at h = 1/60 s rang at ±100% of its weight).
+  // Their friction's too, λ_t ← f_t, and whether each slides (particle_contacts.hpp).
+  if (particle_steps_) {
+    particle_contacts_.update_forces(model_.particles.x);
+    if (bonds_) bonds_->take_particle_forces(particle_contacts_, model_.particles.x, h_);
+  }
   double deepest = 0.0;
   collider_impulses_.resize(model_.colliders.size(), Vec3::Zero());
   interval_time_ += h_;
-  for (size_t first = 0; first < contacts_.size();) {
-    const auto& key = states_[contacts_[first].state].key;
-    const bool sliding = states_[contacts_[first].state].sliding;
-    const double mu_s = static_friction(key[1]);
-    size_t last = first;
-    bool touching = false, stuck = false;
-    double normal = 0.0;
-    Vec3 friction = Vec3::Zero();
-    for (; last < contacts_.size(); ++last) {
-      const Contact& contact = contacts_[last];
-      ContactState& state = states_[contact.state];
-      if (state.key[0] != key[0] || state.key[1] != key[1]) break;
-      const ContactPoints p = locate(contact);
-      deepest = std::max(deepest, -p.n.dot(p.pa - p.pb));
-      if (is_collider(key[1]))
-        collider_impulses_[collider_index(key[1])] -= (contact.lambda_normal * p.n + contact.friction) / h_;
-      state.interval_normal += contact.lambda_normal;
-      state.interval_friction += contact.friction;
-      normal += state.interval_normal;
-      friction += state.interval_friction;
-      if (contact.lambda_normal == 0.0) continue;
-      touching = true;
-      stuck = stuck || !contact.capped;
-    }
-    const bool slides =
-        has_friction_ && touching && (sliding ? !stuck : end_of_interval && friction.norm() > mu_s * normal);
-    // Held in the particles' steps, the pair slides when every one of its touching contacts
-    // ended the substep on its cone, and sticks when one lay inside. (Judged contact by contact,
-    // a grain set on a plane tilted to 0.9 μ_s saw three of its ten contacts reach the cone,
-    // slide at μ_k, hand their load to the others, and the whole grain slid away.)
-    bool held_touching = false, all_on_cone = true;
-    for (size_t c = first; c < last; ++c) {
-      if (contacts_[c].particle_contact < 0) continue;
-      const ParticleContact& held = particle_contacts_.contacts()[contacts_[c].particle_contact];
-      if (held.force == 0.0) continue;
-      held_touching = true;
-      all_on_cone = all_on_cone && held.sliding;
-    }
-    for (size_t c = first; c < last; ++c) {
-      ContactState& state = states_[contacts_[c].state];
-      state.sliding = slides;
-      // Anchors go when the pair slides; they stay through a flight (flown), and start again
-      // where the contact is when friction could not take the slip back (restart_anchors).
-      state.anchored = state.anchored && !slides;
-      if (state.anchored && contacts_[c].capped) restart_anchors(state, locate(contacts_[c]));
-      state.flown = state.anchored && contacts_[c].lambda_normal == 0.0;
-      if (contacts_[c].particle_contact < 0) continue;
-      const ParticleContact& held = particle_contacts_.contacts()[contacts_[c].particle_contact];
-      state.particle_force = held.force;
-      state.friction_force = held.friction_force;
-      state.sliding = held_touching && all_on_cone;
-    }
-    first = last;
-  }
+  for (size_t first = 0; first < contacts_.size();) first = end_pair_substep(first, end_of_interval, deepest);
   statistics_.max_penetration = deepest;
   if (end_of_interval) {
     statistics_.collider_forces.resize(collider_impulses_.size());

@@ -146,6 +146,10 @@ class ContactSolver {
   Vec3 tangential_slip(const Contact& contact, const ContactPoints& p, const Positions& x_previous) const;
   Vec3 anchored_slip(ContactState& state, const ContactPoints& p, const Positions& x_previous) const;
   void restart_anchors(ContactState& state, const ContactPoints& p) const;
+  /// end_substep for the contacts of one body pair, from `first`: their statistics (the
+  /// deepest penetration so far, collider impulses), interval sums and whether the pair
+  /// slides; returns the index past its last contact.
+  size_t end_pair_substep(size_t first, bool end_of_interval, double& deepest);
   /// How far any point of body b can move in `span` seconds from `time`, with leeway for what
   /// contacts add: 1.5 s span + ½ |g| span², s the speed of its fastest point (rigid:
   /// |v| + |ω| r_max; soft: of its sphere centres since the last broad phase, at the first the

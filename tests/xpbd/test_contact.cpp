@@ -422,6 +422,28 @@ double deepest_overlap(const Model& model, int a, int b) {
   return deepest;
 }
 
+/// A box collider of `half_extents` at `start` until 2 s, then moving straight to `end` by
+/// `until`, where it stays.
+Collider box_moving_at_2s(const Vec3& half_extents, const Vec3& start, const Vec3& end, double until) {
+  Collider box;
+  box.shape = ColliderShape::kBox;
+  box.half_extents = half_extents;
+  box.motion = {{0.0, start, Quat::Identity()}, {2.0, start, Quat::Identity()}, {until, end, Quat::Identity()}};
+  return box;
+}
+
+/// Steps to `until`; returns the deepest overlap of bodies 0 and 1 on the way, and whether
+/// body 1 was awake after some step (`woke`).
+double deepest_overlap_until(Solver& solver, const Model& model, double until, bool* woke = nullptr) {
+  double deepest = 0.0;
+  while (solver.time() < until) {
+    solver.step();
+    deepest = std::max(deepest, deepest_overlap(model, 0, 1));
+    if (woke) *woke = *woke || !model.bodies[1].asleep;
+  }
+  return deepest;
+}
+
 TEST(GrainContact, AGrainWokenByAMovingColliderMeetsItsSleepingNeighbour) {
   // Two soft grains stacked on the ground, asleep; a box comes down at 5 cm/s and presses the
   // top one 0.2 mm. The box wakes it, and its contacts with the sleeping grain under it come
@@ -435,25 +457,16 @@ TEST(GrainContact, AGrainWokenByAMovingColliderMeetsItsSleepingNeighbour) {
   const double weight = kGrainDensity * kGrainLength * kGrainWidth * kGrainThickness * 9.81;
   for (Body& body : model.bodies) body.bond_strength = 20.0 * weight;
   model.colliders.push_back(half_space(Vec3::UnitZ(), 0.0, 0.5, 0.4));
-  Collider box;
-  box.shape = ColliderShape::kBox;
-  box.half_extents = Vec3(0.01, 0.01, 0.002);
-  const Vec3 above(0.5 * kGrainLength, 0.5 * kGrainWidth, 2.0 * kGrainThickness + box.half_extents.z());
-  box.motion = {{0.0, above + Vec3(0.0, 0.0, 5e-3), Quat::Identity()},
-                {2.0, above + Vec3(0.0, 0.0, 5e-3), Quat::Identity()},
-                {2.104, above - Vec3(0.0, 0.0, 2e-4), Quat::Identity()}};
-  model.colliders.push_back(box);
+  const Vec3 half_extents(0.01, 0.01, 0.002);
+  const Vec3 above(0.5 * kGrainLength, 0.5 * kGrainWidth, 2.0 * kGrainThickness + half_extents.z());
+  model.colliders.push_back(
+      box_moving_at_2s(half_extents, above + Vec3(0.0, 0.0, 5e-3), above - Vec3(0.0, 0.0, 2e-4), 2.104));
   Solver solver(model, scene_settings(BodyKind::kSoft, 1.0 / 30.0, 80));
   while (solver.time() < 2.0 - 1e-9) solver.step();
   ASSERT_TRUE(model.bodies[0].asleep && model.bodies[1].asleep);
   const double top = body_centre(model, 1).z();
-  double deepest = 0.0;
   bool woke = false;
-  while (solver.time() < 2.3) {
-    solver.step();
-    deepest = std::max(deepest, deepest_overlap(model, 0, 1));
-    woke = woke || !model.bodies[1].asleep;
-  }
+  const double deepest = deepest_overlap_until(solver, model, 2.3, &woke);
   EXPECT_TRUE(woke);
   EXPECT_LT(body_centre(model, 1).z(), top - 1e-4);  // pressed
   EXPECT_LT(deepest, 8e-5);  // 5.5e-5 as the box stops (1.1e-4 before)
@@ -470,23 +483,15 @@ TEST(GrainContact, AGrainPushedByAMovingColliderMeetsANeighbourAGapAway) {
   add_grain(model, BodyKind::kSoft, Vec3::Zero());
   add_grain(model, BodyKind::kSoft, Vec3(0.0, kGrainWidth + 1e-4, 0.0));
   model.colliders.push_back(half_space(Vec3::UnitZ(), 0.0, 0.5, 0.4));
-  Collider wall;
-  wall.shape = ColliderShape::kBox;
-  wall.half_extents = Vec3(0.01, 0.002, 0.005);
-  const Vec3 touching(0.5 * kGrainLength, -wall.half_extents.y(), 0.0);  // its face on the grain
-  wall.motion = {{0.0, touching - Vec3(0.0, 1e-3, 0.0), Quat::Identity()},
-                 {2.0, touching - Vec3(0.0, 1e-3, 0.0), Quat::Identity()},
-                 {2.026, touching + Vec3(0.0, 3e-4, 0.0), Quat::Identity()}};
-  model.colliders.push_back(wall);
+  const Vec3 half_extents(0.01, 0.002, 0.005);
+  const Vec3 touching(0.5 * kGrainLength, -half_extents.y(), 0.0);  // its face on the grain
+  model.colliders.push_back(
+      box_moving_at_2s(half_extents, touching - Vec3(0.0, 1e-3, 0.0), touching + Vec3(0.0, 3e-4, 0.0), 2.026));
   Solver solver(model, scene_settings(BodyKind::kSoft, 1.0 / 30.0, 80));
   while (solver.time() < 2.0 - 1e-9) solver.step();
   ASSERT_TRUE(model.bodies[0].asleep && model.bodies[1].asleep);
   const double second = body_centre(model, 1).y();
-  double deepest = 0.0;
-  while (solver.time() < 2.2) {
-    solver.step();
-    deepest = std::max(deepest, deepest_overlap(model, 0, 1));
-  }
+  const double deepest = deepest_overlap_until(solver, model, 2.2);
   EXPECT_GT(body_centre(model, 1).y(), second + 1e-4);  // pushed on by the first
   EXPECT_LT(deepest, 1e-5);  // none (4.3e-5 before)
 }
