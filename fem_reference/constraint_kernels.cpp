@@ -5,17 +5,15 @@ namespace rice::fem {
 
 NeoHookeanKernel::Derivatives NeoHookeanKernel::evaluate(const Constraint& c, const Vec9& y, Order order) {
   const Eigen::Map<const Mat3> F(y.data());
+  const xpbd::TetConstraintPair p = xpbd::tet_constraint_pair(c, F);
   Derivatives d;
-  d.C << xpbd::neo_hookean_deviatoric_value(F),
-      xpbd::neo_hookean_hydrostatic_value(F, xpbd::neo_hookean_gamma(c.mu, c.lambda));
+  d.C = p.C;
   if (order == Order::kValue) return d;
-  const Mat3 dD = xpbd::neo_hookean_deviatoric_dF(F);
-  const Mat3 dH = xpbd::neo_hookean_hydrostatic_dF(F);
-  d.dC.row(0) = Eigen::Map<const Vec9>(dD.data()).transpose();
-  d.dC.row(1) = Eigen::Map<const Vec9>(dH.data()).transpose();
+  d.dC.row(0) = Eigen::Map<const Vec9>(p.dD.data()).transpose();
+  d.dC.row(1) = Eigen::Map<const Vec9>(p.dH.data()).transpose();
   if (order == Order::kGradient) return d;
-  d.d2C[0] = xpbd::neo_hookean_deviatoric_d2F(F);
-  d.d2C[1] = xpbd::neo_hookean_hydrostatic_d2F(F);
+  d.d2C[0] = xpbd::tet_deviatoric_d2F(c, F);
+  d.d2C[1] = xpbd::determinant_hessian(F);
   return d;
 }
 

@@ -11,7 +11,7 @@
 
 #include "xpbd/distance_constraint.hpp"
 #include "xpbd/model.hpp"
-#include "xpbd/neo_hookean_constraints.hpp"
+#include "xpbd/tet_constraint_pair.hpp"
 #include "xpbd/tet_stencil.hpp"
 
 namespace rice::fem {
@@ -61,7 +61,9 @@ struct TetReduction {
   static Mat12 expand(const Mat9& H, const Mat3& Dm_inv) { return xpbd::hessian_from_d2F(H, Dm_inv); }
 };
 
-/// The stable Neo-Hookean pair (C_D, C_H) of one tet, y = vec F.
+/// The elastic pair (C_D, C_H) of one tet, of either material (xpbd/tet_constraint_pair.hpp), y =
+/// vec F. Corotated: where C_D = 0 exactly, ∂C_D/∂F and ∂²C_D/∂F² are zero, so the form sees
+/// no shear stiffness at that one point (C_D ∂²C_D/∂F² is finite everywhere else).
 struct NeoHookeanKernel {
   using Constraint = xpbd::NeoHookeanTet;
   static constexpr int kArity = 4, kRows = 2, kReduced = 9;
@@ -76,9 +78,7 @@ struct NeoHookeanKernel {
   }
   static Vec2 damping(const Constraint& c) { return {c.beta_deviatoric, c.beta_hydrostatic}; }
   /// The pair's energy at rest, subtracted so that U = 0 there (neo_hookean_constraints.hpp).
-  static double rest_energy(const Constraint& c) {
-    return xpbd::neo_hookean_rest_energy_density(c.mu, c.lambda) * c.rest_volume;
-  }
+  static double rest_energy(const Constraint& c) { return c.rest_energy(); }
   static Derivatives evaluate(const Constraint& c, const Vec9& y, Order order);
 };
 

@@ -52,12 +52,13 @@ int add_rigid_body(Model& model, const TetMesh& mesh, double density, const Sphe
 }
 
 int add_soft_body(Model& model, const TetMesh& mesh, double density, const LameParameters& material,
-                  double rayleigh_time, const SphereSet& spheres, double strain_rate_time) {
+                  double rayleigh_time, const SphereSet& spheres, double strain_rate_time,
+                  TetMaterial tet_material) {
   require_spheres(spheres, "add_soft_body");
   // Build the body alone, then append it with its particle indices shifted.
   Model single;
   single.particles = make_particles(mesh, density);
-  add_neo_hookean_tets(single, mesh, material, rayleigh_time, strain_rate_time);
+  add_neo_hookean_tets(single, mesh, material, rayleigh_time, strain_rate_time, tet_material);
   const int offset = model.particles.size();
   Particles& p = model.particles;
   const int total = offset + single.particles.size();

@@ -25,6 +25,12 @@ struct LameParameters;
 
 enum class BodyKind { kSoft, kRigid };
 
+/// The elastic material of a tet's constraint pair.
+enum class TetMaterial {
+  kStableNeoHookean,  ///< the paper's (neo_hookean_constraints.hpp)
+  kCorotated,         ///< zero at rest, stable at far fewer XPBD substeps (corotated_constraints.hpp)
+};
+
 struct Body {
   BodyKind kind = BodyKind::kRigid;
   int rigid_body = -1;        ///< index into Model::rigid_bodies (rigid)
@@ -57,12 +63,14 @@ struct SphereSet {
 /// collision spheres, at rest where the mesh lies. Returns the body's index.
 int add_rigid_body(Model& model, const TetMesh& mesh, double density, const SphereSet& spheres);
 
-/// Adds a soft body: the mesh's vertices as new particles (lumped masses), one Neo-Hookean
+/// Adds a soft body: the mesh's vertices as new particles (lumped masses), one elastic
 /// pair per tet (add_neo_hookean_tets) and the collision spheres embedded in the tets that
 /// hold their centres (the nearest tet for a centre outside the mesh). Returns its index.
-/// `rayleigh_time` and `strain_rate_time`: the tets' two dampings (add_neo_hookean_tets).
+/// `rayleigh_time` and `strain_rate_time`: the tets' two dampings; `tet_material` their
+/// material (add_neo_hookean_tets).
 int add_soft_body(Model& model, const TetMesh& mesh, double density, const LameParameters& material,
-                  double rayleigh_time, const SphereSet& spheres, double strain_rate_time = 0.0);
+                  double rayleigh_time, const SphereSet& spheres, double strain_rate_time = 0.0,
+                  TetMaterial tet_material = TetMaterial::kStableNeoHookean);
 
 /// Centre of mass: the rigid body's x, or the mass-weighted mean of a soft body's particles.
 Vec3 body_centre(const Model& model, const Body& body);

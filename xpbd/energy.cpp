@@ -2,7 +2,7 @@
 #include "xpbd/energy.hpp"
 
 #include "xpbd/distance_constraint.hpp"
-#include "xpbd/neo_hookean_constraints.hpp"
+#include "xpbd/tet_constraint_pair.hpp"
 #include "xpbd/tet_volume_constraint.hpp"
 
 namespace rice::xpbd {
@@ -55,11 +55,9 @@ double elastic_energy(const Model& model) {
     energy += half_c2_over_alpha(tet_volume_constraint_value(gather(x, c.particles), c.rest_volume),
                                  c.compliance);
   for (const NeoHookeanTet& t : model.neo_hookean) {
-    const Mat3 F = deformation_gradient(gather(x, t.particles), t.Dm_inv);
-    energy += half_c2_over_alpha(neo_hookean_deviatoric_value(F), t.compliance_deviatoric()) +
-              half_c2_over_alpha(neo_hookean_hydrostatic_value(F, neo_hookean_gamma(t.mu, t.lambda)),
-                                 t.compliance_hydrostatic()) -
-              neo_hookean_rest_energy_density(t.mu, t.lambda) * t.rest_volume;
+    const Vec2 C = tet_constraint_pair(t, deformation_gradient(gather(x, t.particles), t.Dm_inv)).C;
+    energy += half_c2_over_alpha(C[0], t.compliance_deviatoric()) +
+              half_c2_over_alpha(C[1], t.compliance_hydrostatic()) - t.rest_energy();
   }
   for (const Attachment& a : model.attachments)
     if (a.compliance > 0.0)
@@ -89,11 +87,8 @@ Positions elastic_energy_gradient(const Model& model) {
                              tet_volume_constraint_gradient(xs));
   }
   for (const NeoHookeanTet& t : model.neo_hookean) {
-    const Mat3 F = deformation_gradient(gather(x, t.particles), t.Dm_inv);
-    const Mat3 dUdF =
-        neo_hookean_deviatoric_value(F) / t.compliance_deviatoric() * neo_hookean_deviatoric_dF(F) +
-        neo_hookean_hydrostatic_value(F, neo_hookean_gamma(t.mu, t.lambda)) /
-            t.compliance_hydrostatic() * neo_hookean_hydrostatic_dF(F);
+    const TetConstraintPair p = tet_constraint_pair(t, deformation_gradient(gather(x, t.particles), t.Dm_inv));
+    const Mat3 dUdF = p.C[0] / t.compliance_deviatoric() * p.dD + p.C[1] / t.compliance_hydrostatic() * p.dH;
     scatter(t.particles, gradient_from_dF(dUdF, t.Dm_inv));
   }
   for (const Attachment& a : model.attachments)

@@ -53,9 +53,11 @@ Particles make_particles(const TetMesh& mesh, double density) {
 }
 
 void add_neo_hookean_tets(Model& model, const TetMesh& mesh, LameParameters material,
-                          double rayleigh_time, double strain_rate_time) {
+                          double rayleigh_time, double strain_rate_time, TetMaterial tet_material) {
   if (!(material.mu > 0.0) || !(material.lambda + material.mu > 0.0))
     throw std::invalid_argument("add_neo_hookean_tets: need mu > 0 and lambda + mu > 0");
+  if (tet_material == TetMaterial::kCorotated && !(material.lambda > 0.0))
+    throw std::invalid_argument("add_neo_hookean_tets: the corotated material needs lambda > 0 (Poisson's ratio > 0)");
   if (!(strain_rate_time >= 0.0))
     throw std::invalid_argument("add_neo_hookean_tets: strain-rate damping time must be >= 0");
   if (strain_rate_time > 0.0 && !(3.0 * material.lambda + 2.0 * material.mu > 0.0))
@@ -69,6 +71,7 @@ void add_neo_hookean_tets(Model& model, const TetMesh& mesh, LameParameters mate
     tet.rest_volume = volumes[t];
     tet.mu = material.mu;
     tet.lambda = material.lambda + material.mu;  // so that small strains see Lamé (μ, λ)
+    tet.material = tet_material;  // before β: the compliances depend on it
     tet.beta_deviatoric = beta_for(tet.compliance_deviatoric(), rayleigh_time);
     tet.beta_hydrostatic = beta_for(tet.compliance_hydrostatic(), rayleigh_time);
     tet.strain_rate_damping = strain_rate_time;

@@ -10,6 +10,7 @@
 
 #include "xpbd/body.hpp"
 #include "xpbd/collider.hpp"
+#include "xpbd/neo_hookean_constraints.hpp"
 #include "xpbd/rigid_body.hpp"
 #include "xpbd/tet_mesh.hpp"
 #include "xpbd/types.hpp"
@@ -39,21 +40,33 @@ struct TetVolumeConstraint {
   double damping;     ///< β
 };
 
-/// The stable Neo-Hookean pair of one tetrahedron (neo_hookean_constraints.hpp).
+/// The elastic constraint pair (C_D, C_H) of one tetrahedron, of either material
+/// (tet_constraint_pair.hpp evaluates it).
 struct NeoHookeanTet {
   std::array<int, 4> particles;
   Mat3 Dm_inv;         ///< inverse rest edge matrix
   double rest_volume;  ///< V [m³]
-  /// Parameters of the energy μ/2 tr FᵀF + λ/2 (det F − 1 − μ/λ)² [Pa]. Its linearisation
-  /// at F = I has Lamé parameters (μ, λ − μ), so add_neo_hookean_tets stores
+  /// Neo-Hookean: parameters of the energy μ/2 tr FᵀF + λ/2 (det F − 1 − μ/λ)² [Pa]. Its
+  /// linearisation at F = I has Lamé parameters (μ, λ − μ), so add_neo_hookean_tets stores
   /// λ = λ_Lamé + μ: a body then answers small loads as linear elasticity with (E, ν) does.
+  /// Corotated: the same μ and λ, with the energy μ ‖F − R‖² + (λ − μ)/2 (det F − 1)².
   double mu, lambda;
   double beta_deviatoric, beta_hydrostatic;  ///< β_D, β_H
   /// τ [s] of the dissipation ½ τ Ė:𝒞:Ė on every strain rate (strain_rate_damping.hpp); 0: off.
   double strain_rate_damping = 0.0;
+  TetMaterial material = TetMaterial::kStableNeoHookean;
+  bool corotated() const { return material == TetMaterial::kCorotated; }
   double lambda_lame() const { return lambda - mu; }  ///< λ_L of the small-strain material
-  double compliance_deviatoric() const { return 1.0 / (mu * rest_volume); }      ///< α_D
-  double compliance_hydrostatic() const { return 1.0 / (lambda * rest_volume); }  ///< α_H
+  /// α_D: 1/(μV), or 1/(2μV) for the corotated pair.
+  double compliance_deviatoric() const { return 1.0 / ((corotated() ? 2.0 : 1.0) * mu * rest_volume); }
+  /// α_H: 1/(λV), or 1/(λ_L V) for the corotated pair.
+  double compliance_hydrostatic() const { return 1.0 / ((corotated() ? lambda_lame() : lambda) * rest_volume); }
+  /// C_H = det F − this: γ = 1 + μ/λ, which makes the Neo-Hookean pair stress-free at rest; 1.
+  double rest_determinant() const { return corotated() ? 1.0 : neo_hookean_gamma(mu, lambda); }
+  /// U at F = I, subtracted so that rest has U = 0 (neo_hookean_rest_energy_density; 0).
+  double rest_energy() const {
+    return corotated() ? 0.0 : neo_hookean_rest_energy_density(mu, lambda) * rest_volume;
+  }
 };
 
 /// Pulls particle i towards a target point: the vector constraint C = x_i − p (three scalar
@@ -134,13 +147,15 @@ LameParameters lame_from_young_poisson(double young, double poisson);
 /// Particles at the mesh vertices at rest, with lumped masses from density ρ [kg/m³].
 Particles make_particles(const TetMesh& mesh, double density);
 
-/// One Neo-Hookean pair per tetrahedron with the Lamé parameters `material` at small strain
-/// (the energy's λ is material.lambda + material.mu, see NeoHookeanTet). `rayleigh_time` τ [s] sets stiffness-proportional
+/// One elastic pair per tetrahedron, of `tet_material`, with the Lamé parameters `material`
+/// at small strain (the energy's λ is material.lambda + material.mu, see NeoHookeanTet; the
+/// corotated pair needs material.lambda > 0, a Poisson's ratio in (0, ½)). `rayleigh_time` τ [s] sets stiffness-proportional
 /// damping β = τ/α for both constraints, so that γ = αβ/h = τ/h (XPBD eq. 26); it damps the
 /// rates of ‖F‖ and det F only. `strain_rate_time` τ_E [s] sets the damping of every strain
 /// rate (NeoHookeanTet::strain_rate_damping), which needs 3λ + 2μ > 0.
 void add_neo_hookean_tets(Model& model, const TetMesh& mesh, LameParameters material,
-                          double rayleigh_time = 0.0, double strain_rate_time = 0.0);
+                          double rayleigh_time = 0.0, double strain_rate_time = 0.0,
+                          TetMaterial tet_material = TetMaterial::kStableNeoHookean);
 
 /// One distance constraint per unique tet edge. Each spring's compliance is
 /// α = L² / (E V_e), V_e the volume of the tets around the edge shared among their six edges:

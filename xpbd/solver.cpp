@@ -13,8 +13,8 @@
 #include "xpbd/damped_update.hpp"
 #include "xpbd/distance_constraint.hpp"
 #include "xpbd/energy.hpp"
-#include "xpbd/neo_hookean_constraints.hpp"
 #include "xpbd/sleeping.hpp"
+#include "xpbd/tet_constraint_pair.hpp"
 #include "xpbd/tet_volume_constraint.hpp"
 #include "xpbd/vertex_block_descent.hpp"
 
@@ -131,6 +131,8 @@ void Solver::substep(double h, bool end_of_interval) {
   if (settings_.primal_correction)
     impulse_neo_hookean_.assign(model_.neo_hookean.size(), Eigen::Matrix<double, 3, 4>::Zero());
   lambda_attachment_.assign(model_.attachments.size(), Vec3::Zero());
+  if (rotation_.size() != model_.neo_hookean.size())
+    rotation_.assign(model_.neo_hookean.size(), Eigen::Quaterniond::Identity());
   if (settings_.diagnostics) x_predicted_ = model_.particles.x;
   // Contacts from the prediction, before vertex block descent's initial guess: the guess may
   // hold a body back where its body steps then carry it to the prediction (started from the
@@ -314,7 +316,8 @@ void Solver::project_volume(int c, double h) {
 
 void Solver::project_neo_hookean(int c, double h) {
   // The deviatoric and hydrostatic constraints of one tet solved jointly (Macklin & Müller
-  // 2021 §5): solved one after the other they would fight at rest, where neither is zero.
+  // 2021 §5): solved one after the other, the Neo-Hookean pair would fight at rest, where
+  // neither is zero.
   const NeoHookeanTet& t = model_.neo_hookean[c];
   if (!asleep_particle_.empty() && asleep_particle_[t.particles[0]]) return;  // a sleeping body's tet
   Positions& x = model_.particles.x;
@@ -324,30 +327,32 @@ void Solver::project_neo_hookean(int c, double h) {
   if (wk[0] + wk[1] + wk[2] + wk[3] == 0.0) return;
   // Gradients for x1..x3 are the columns of (∂C/∂F) Dm⁻ᵀ; x0 gets minus their sum.
   Eigen::Matrix<double, 3, 4> grad_D, grad_H;
-  const auto deformation = [&] {
-    return Mat3(edge_matrix(position(x, id[0]), position(x, id[1]), position(x, id[2]), position(x, id[3])) *
-                t.Dm_inv);
-  };
-  const auto gradients = [&](const Mat3& F) {
-    grad_D.rightCols<3>() = neo_hookean_deviatoric_dF(F) * t.Dm_inv.transpose();
-    grad_H.rightCols<3>() = neo_hookean_hydrostatic_dF(F) * t.Dm_inv.transpose();
+  const auto pair = [&] {
+    const Mat3 F = edge_matrix(position(x, id[0]), position(x, id[1]), position(x, id[2]), position(x, id[3])) *
+                   t.Dm_inv;
+    Mat3 R = Mat3::Identity();
+    if (t.corotated()) {
+      refine_polar_rotation(F, rotation_[c]);
+      R = rotation_[c].toRotationMatrix();
+    }
+    const TetConstraintPair p = tet_constraint_pair(t, F, R);
+    grad_D.rightCols<3>() = p.dD * t.Dm_inv.transpose();
+    grad_H.rightCols<3>() = p.dH * t.Dm_inv.transpose();
     grad_D.col(0) = -grad_D.rightCols<3>().rowwise().sum();
     grad_H.col(0) = -grad_H.rightCols<3>().rowwise().sum();
+    return p.C;
   };
   const bool correct = settings_.primal_correction && settings_.method == Method::kXpbd;
   if (correct) {
     // Re-apply the accumulated λ along the current gradients (see SolverSettings).
-    gradients(deformation());
+    pair();
     const Vec2& lambda = lambda_neo_hookean_[c];
     const Eigen::Matrix<double, 3, 4> impulse = grad_D * lambda[0] + grad_H * lambda[1];
     for (int k = 0; k < 4; ++k)
       position(x, id[k]) += wk[k] * (impulse.col(k) - impulse_neo_hookean_[c].col(k));
     impulse_neo_hookean_[c] = impulse;
   }
-  const Mat3 F = deformation();
-  const Vec2 C(neo_hookean_deviatoric_value(F),
-               neo_hookean_hydrostatic_value(F, neo_hookean_gamma(t.mu, t.lambda)));
-  gradients(F);
+  const Vec2 C = pair();
   Mat2 gwg = Mat2::Zero();
   Vec2 grad_dot_dx = Vec2::Zero();
   for (int k = 0; k < 4; ++k) {
@@ -446,10 +451,9 @@ Positions Solver::constraint_impulses() const {
         lambda_volume_[c]);
   for (size_t c = 0; c < model_.neo_hookean.size(); ++c) {
     const NeoHookeanTet& t = model_.neo_hookean[c];
-    const Vec12 xs = tet_stencil(x, t.particles);
+    const TetConstraintPair p = tet_constraint_pair(t, deformation_gradient(tet_stencil(x, t.particles), t.Dm_inv));
     const Vec2& lambda = lambda_neo_hookean_[c];
-    add(t.particles, (neo_hookean_deviatoric_gradient(xs, t.Dm_inv) * lambda[0] +
-                      neo_hookean_hydrostatic_gradient(xs, t.Dm_inv) * lambda[1]).eval(), 1.0);
+    add(t.particles, gradient_from_dF(Mat3(p.dD * lambda[0] + p.dH * lambda[1]), t.Dm_inv), 1.0);
   }
   for (size_t a = 0; a < model_.attachments.size(); ++a)
     impulse.row(model_.attachments[a].particle) += lambda_attachment_[a].transpose();
@@ -491,14 +495,11 @@ StepDiagnostics Solver::measure(double h) const {
   for (size_t c = 0; c < model_.neo_hookean.size(); ++c) {
     const NeoHookeanTet& t = model_.neo_hookean[c];
     const auto& id = t.particles;
-    const Vec12 xs = tet_stencil(x, id);
-    const Mat3 F = deformation_gradient(xs, t.Dm_inv);
+    const TetConstraintPair p = tet_constraint_pair(t, deformation_gradient(tet_stencil(x, id), t.Dm_inv));
     const Vec12 dx = stencil_displacement(id);
     const Vec2& lambda = lambda_neo_hookean_[c];
-    add(neo_hookean_deviatoric_value(F), t.compliance_deviatoric(), t.beta_deviatoric, lambda[0],
-        neo_hookean_deviatoric_gradient(xs, t.Dm_inv).dot(dx));
-    add(neo_hookean_hydrostatic_value(F, neo_hookean_gamma(t.mu, t.lambda)), t.compliance_hydrostatic(),
-        t.beta_hydrostatic, lambda[1], neo_hookean_hydrostatic_gradient(xs, t.Dm_inv).dot(dx));
+    add(p.C[0], t.compliance_deviatoric(), t.beta_deviatoric, lambda[0], gradient_from_dF(p.dD, t.Dm_inv).dot(dx));
+    add(p.C[1], t.compliance_hydrostatic(), t.beta_hydrostatic, lambda[1], gradient_from_dF(p.dH, t.Dm_inv).dot(dx));
   }
   for (size_t a = 0; a < model_.attachments.size(); ++a) {
     const Attachment& attachment = model_.attachments[a];

@@ -156,6 +156,8 @@ class Solver {
   std::vector<Vec2> lambda_neo_hookean_;  ///< (λ_D, λ_H) per tet
   /// ∇C_Dᵀλ_D + ∇C_Hᵀλ_H per tet as last applied (one column per vertex); primal correction only
   std::vector<Eigen::Matrix<double, 3, 4>> impulse_neo_hookean_;
+  /// Polar rotation of each corotated tet's F, warm-started across substeps (refine_polar_rotation)
+  std::vector<Eigen::Quaterniond> rotation_;
   std::vector<Vec3> lambda_attachment_;
   std::unique_ptr<ContactSolver> contacts_;
   std::unique_ptr<VertexBlockDescent> vbd_;  ///< Method::kVbd

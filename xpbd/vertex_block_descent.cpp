@@ -7,8 +7,8 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 
-#include "xpbd/neo_hookean_constraints.hpp"
 #include "xpbd/strain_rate_damping.hpp"
+#include "xpbd/tet_constraint_pair.hpp"
 
 namespace rice::xpbd {
 namespace {
@@ -18,8 +18,17 @@ Mat3 deformation(const Positions& x, const NeoHookeanTet& t) {
   return edge_matrix(position(x, id[0]), position(x, id[1]), position(x, id[2]), position(x, id[3])) * t.Dm_inv;
 }
 
-Vec2 constraint_values(const NeoHookeanTet& t, const Mat3& F) {
-  return {neo_hookean_deviatoric_value(F), neo_hookean_hydrostatic_value(F, neo_hookean_gamma(t.mu, t.lambda))};
+Vec2 constraint_values(const NeoHookeanTet& t, const Mat3& F) { return tet_constraint_pair(t, F).C; }
+
+/// The deviatoric term's vertex Hessian, (k_D + b_D) g gᵀ + f_D ∂²C_D/∂x_i², for the particle
+/// with stencil weights b, g = ∂C_D/∂x_i and f_D = k_D C_D + b_D Ċ_D h. Corotated: Gauss–Newton,
+/// k_D ‖b‖² I + b_D g gᵀ: the Hessian of ½ k_D ‖F − R‖² without −k_D ∂R/∂F (negative
+/// semi-definite, so dropping it keeps the system positive definite) and of the damping
+/// without its f-term, whose ∂²C_D/∂x² grows as 1/C_D near rest.
+Mat3 deviatoric_vertex_hessian(const NeoHookeanTet& t, const Mat3& F, const Vec3& b, const Vec3& g, double k,
+                               double damping, double force) {
+  if (t.corotated()) return k * b.squaredNorm() * Mat3::Identity() + damping * g * g.transpose();
+  return (k + damping) * g * g.transpose() + force * neo_hookean_deviatoric_vertex_hessian(F, b);
 }
 
 /// Greedy colouring of the particles that have corners: each, in index order, takes the
@@ -197,17 +206,17 @@ void VertexBlockDescent::solve_particle(Model& model, const Positions& y, int i,
     const Mat3 F = deformation(x, t);
     // U + Ψ^C through the constraint kernels: ∂/∂C_r = k_r C_r + b_r (C_r − C_r(xⁿ)),
     // ∂²/∂C_r² = k_r + b_r with k = 1/α, b = β/h (fem_reference/constraint_potential_form.hpp).
-    const Vec2 C = constraint_values(t, F);
+    const TetConstraintPair p = tet_constraint_pair(t, F);
     const Vec2 k(1.0 / t.compliance_deviatoric(), 1.0 / t.compliance_hydrostatic());
     const Vec2 damping = constraint_damping_ ? Vec2(t.beta_deviatoric / h_, t.beta_hydrostatic / h_) : Vec2::Zero();
-    const Vec2 rate = constraint_damping_ ? Vec2(C - C_start_[corners_[c].tet]) : Vec2::Zero();
-    const Vec2 force = k.cwiseProduct(C) + damping.cwiseProduct(rate);
-    const Vec3 gD = vertex_gradient(neo_hookean_deviatoric_dF(F), b);
-    const Vec3 gH = vertex_gradient(neo_hookean_hydrostatic_dF(F), b);
+    const Vec2 rate = constraint_damping_ ? Vec2(p.C - C_start_[corners_[c].tet]) : Vec2::Zero();
+    const Vec2 force = k.cwiseProduct(p.C) + damping.cwiseProduct(rate);
+    const Vec3 gD = vertex_gradient(p.dD, b);
+    const Vec3 gH = vertex_gradient(p.dH, b);
     gradient += force[0] * gD + force[1] * gH;
     // ∂²C_H/∂x_i² = 0: det(F + δbᵀ) is linear in δ (the matrix determinant lemma).
-    hessian += (k[0] + damping[0]) * gD * gD.transpose() + (k[1] + damping[1]) * gH * gH.transpose() +
-               force[0] * neo_hookean_deviatoric_vertex_hessian(F, b);
+    hessian += deviatoric_vertex_hessian(t, F, b, gD, k[0], damping[0], force[0]) +
+               (k[1] + damping[1]) * gH * gH.transpose();
     if (t.strain_rate_damping > 0.0) {
       const Mat3& F_start = F_start_[corners_[c].tet];
       const double scale = t.strain_rate_damping * t.rest_volume / h_;  // τV/h of Ψ^E

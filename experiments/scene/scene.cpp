@@ -25,6 +25,9 @@ void validate_grains_and_solver(const Scene& s) {
           "need [grains] min_vertices <= max_vertices, got " + cell(s.grains.min_vertices) + " and " +
               cell(s.grains.max_vertices));
   check(scene_key("grains", "poisson"), s.grains.poisson);
+  require(s.grains.elasticity != xpbd::TetMaterial::kCorotated || s.grains.poisson > 0.0,
+          "[grains] elasticity = 'corotated' needs poisson > 0 (its volume term's stiffness is the Lamé "
+          "lambda), got " + cell(s.grains.poisson));
   check(scene_key("grains", "soak_minutes"), s.grains.soak_minutes);
   check(scene_key("grains", "soak_temperature_c"), s.grains.soak_temperature);
   if (!std::isnan(s.grains.stickiness)) check(scene_key("grains", "stickiness"), s.grains.stickiness);
@@ -75,7 +78,8 @@ void validate(const Scene& scene) {
 
 int substeps_per_frame(const Scene& scene) {
   if (scene.solver.substeps > 0) return scene.solver.substeps;
-  return scene.grains.body == xpbd::BodyKind::kRigid ? 80 : 480;
+  if (scene.grains.body == xpbd::BodyKind::kRigid) return 80;
+  return scene.grains.elasticity == xpbd::TetMaterial::kCorotated ? 160 : 480;
 }
 
 }  // namespace rice::experiments

@@ -34,6 +34,9 @@ struct SceneGrains {
   std::uint64_t seed = 1;
   xpbd::BodyKind body = xpbd::BodyKind::kRigid;
   double young = 1e5;  ///< soft grains [Pa]: cooked rice kernels are soft (0.1–1 MPa; ESTIMATE)
+  /// Soft grains' tets: corotated, the same small-strain material as the paper's stable
+  /// Neo-Hookean pair, and stable under XPBD at a third of its substeps (docs/known-limits.md).
+  xpbd::TetMaterial elasticity = xpbd::TetMaterial::kCorotated;
   /// Vertex range of a soft grain's simulation mesh (grains::SimulationMeshParameters).
   int min_vertices = 20, max_vertices = 60;
   double poisson = 0.3;
@@ -49,10 +52,10 @@ struct SceneSolver {
   double fps = 30.0;
   int frames = 180;
   /// 0: 80 for rigid grains, which keeps the resting pile's penetrations under 5% of a grain's
-  /// thickness (measured: 20 left 29%, 40 left 6.5%), and 480 for soft ones at 30 fps, under
-  /// the Neo-Hookean pair's stability limit on the grains' sliver tets at E = 100 kPa
-  /// (measured: one soft grain in the chawan bounces for ever at 240 substeps and sleeps
-  /// within 30 frames at 480; docs/known-limits.md).
+  /// thickness (measured: 20 left 29%, 40 left 6.5%); for soft ones at 30 fps, 160 for
+  /// corotated tets and 480 for the stable Neo-Hookean pair, under its stability limit on the
+  /// grains' sliver tets at E = 100 kPa (measured: one soft grain in the chawan bounces for
+  /// ever at 240 substeps and sleeps within 30 frames at 480; docs/known-limits.md).
   int substeps = 0;
   int iterations = 1;
   /// Soft grains' tets by vertex block descent (xpbd::Method::kVbd) instead of XPBD's

@@ -73,6 +73,8 @@ void read_grains(TomlSection section, SceneGrains& g) {
   g.seed = static_cast<std::uint64_t>(section.integer("seed"));
   g.body = section.choice("body") == "soft" ? xpbd::BodyKind::kSoft : xpbd::BodyKind::kRigid;
   g.young = section.number("young_pa");
+  g.elasticity = section.choice("elasticity") == "corotated" ? xpbd::TetMaterial::kCorotated
+                                                              : xpbd::TetMaterial::kStableNeoHookean;
   g.min_vertices = static_cast<int>(section.integer("min_vertices"));
   g.max_vertices = static_cast<int>(section.integer("max_vertices"));
   if (g.min_vertices > g.max_vertices) {
@@ -81,6 +83,8 @@ void read_grains(TomlSection section, SceneGrains& g) {
     section.require(false, "min_vertices", "at most max_vertices (" + cell(g.max_vertices) + ")");
   }
   g.poisson = section.number("poisson");
+  section.require(g.elasticity != xpbd::TetMaterial::kCorotated || g.poisson > 0.0, "poisson",
+                  "> 0 with elasticity = 'corotated' (its volume term's stiffness is the Lame lambda)");
   g.soak_minutes = section.number("soak_minutes");
   g.soak_temperature = section.number("soak_temperature_c");
   g.stickiness = section.number("stickiness");

@@ -65,7 +65,10 @@ std::vector<SceneKey> scene_and_grain_keys() {
               "distinct generated grains; each grain is an instance of one, with its own swell P and rotation"),
       integer("grains", "seed", closed(0, kLargestSeed), 1.0, "every random choice of the scene flows from it"),
       choice("grains", "body", {"rigid", "soft"}, std::string("rigid"),
-             "rigid bodies, or soft tet meshes with the stable Neo-Hookean material"),
+             "rigid bodies, or soft tet meshes"),
+      choice("grains", "elasticity", {"corotated", "neo-hookean"}, std::string("corotated"),
+             "soft grains' tet material: corotated, or the paper's stable Neo-Hookean pair (the same at small "
+             "strain; the corotated pair is stable under XPBD at a third of the substeps)"),
       number("grains", "young_pa", closed(1e3, 1e9), 1e5, "soft grains' Young's modulus [Pa]"),
       integer("grains", "min_vertices", closed(4, 1000), 20.0,
               "the fewest vertices of a grain's simulation mesh (Mesh_3, grains/simulation_mesh.hpp): soft grains' tets; "
@@ -86,7 +89,7 @@ std::vector<SceneKey> solver_container_emitter_keys() {
   return {
       number("solver", "fps", open_low(0, 1000), 30.0, "frames per second"),
       integer("solver", "frames", closed(1, 100000), 180.0, "frames simulated"),
-      integer("solver", "substeps", closed(0, 10000), 0.0, "substeps per frame; 0: 80 for rigid grains, 480 for soft"),
+      integer("solver", "substeps", closed(0, 10000), 0.0, "substeps per frame; 0: 80 for rigid grains, 160 for soft corotated ones, 480 for soft Neo-Hookean ones"),
       integer("solver", "iterations", closed(1, 1000), 1.0, "Gauss–Seidel sweeps per substep"),
       choice("solver", "vbd_damping", {"strain-rate", "constraint"}, std::string("strain-rate"),
              "vbd: the soak's damping time (eq. 4) as the convex strain-rate damping, or as the paper's Rayleigh "

@@ -69,10 +69,11 @@ void add_colliders(const Scene& scene, World& world) {
 /// damping of the constraints; by VBD by default as the strain-rate damping, which is convex
 /// and adds no energy (a 100-grain VBD pour in the chawan: 41 grains awake at the end and
 /// 2641 bond breaks with the constraints' damping, none awake and 1162 breaks with it).
-int add_soft_grain(const SceneSolver& solver, double tau, xpbd::Model& model, const xpbd::TetMesh& mesh,
-                   double density, const xpbd::LameParameters& material, const xpbd::SphereSet& spheres) {
-  const bool strain_rate = solver.vertex_block_descent && solver.vbd_strain_rate_damping;
-  return xpbd::add_soft_body(model, mesh, density, material, strain_rate ? 0.0 : tau, spheres, strain_rate ? tau : 0.0);
+int add_soft_grain(const Scene& scene, double tau, xpbd::Model& model, const xpbd::TetMesh& mesh, double density,
+                   const xpbd::LameParameters& material, const xpbd::SphereSet& spheres) {
+  const bool strain_rate = scene.solver.vertex_block_descent && scene.solver.vbd_strain_rate_damping;
+  return xpbd::add_soft_body(model, mesh, density, material, strain_rate ? 0.0 : tau, spheres, strain_rate ? tau : 0.0,
+                             scene.grains.elasticity);
 }
 
 /// Each grain's body at its build point moved to its parking place, asleep; its bond strength
@@ -93,7 +94,7 @@ void add_bodies(const Scene& scene, World& world) {
     const double density = variant.grain.simulation_density;
     const int b = scene.grains.body == xpbd::BodyKind::kRigid
                       ? xpbd::add_rigid_body(model, mesh, density, spheres)
-                      : add_soft_grain(scene.solver, world.rayleigh_time, model, mesh, density, material, spheres);
+                      : add_soft_grain(scene, world.rayleigh_time, model, mesh, density, material, spheres);
     const double mass = density * grains::total_volume({mesh.V, mesh.T});
     model.bodies[b].bond_strength = scene.effects.cohesion ? world.pull_off_in_weights * mass * model.gravity.norm() : 0.0;
     model.bodies[b].asleep = true;  // parked until its emitter releases it

@@ -113,6 +113,8 @@ TEST(Stepper, StepsAFrameWithTheScenesSubstepsAndMethod) {
   Scene scene;
   EXPECT_EQ(solver_settings(scene).substeps, 80);  // rigid
   scene.grains.body = xpbd::BodyKind::kSoft;
+  EXPECT_EQ(solver_settings(scene).substeps, 160);  // corotated tets
+  scene.grains.elasticity = xpbd::TetMaterial::kStableNeoHookean;
   EXPECT_EQ(solver_settings(scene).substeps, 480);
   scene.solver = {.fps = 60.0, .frames = 2, .substeps = 7, .iterations = 3, .vertex_block_descent = true};
   const xpbd::SolverSettings s = solver_settings(scene);
