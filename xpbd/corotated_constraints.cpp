@@ -1,7 +1,6 @@
 // Polar rotation and its derivative for the corotated pair; see corotated_constraints.hpp.
 #include "xpbd/corotated_constraints.hpp"
 
-#include <Eigen/Cholesky>
 #include <Eigen/SVD>
 #include <cmath>
 
@@ -43,12 +42,14 @@ void refine_polar_rotation(const Mat3& F, Eigen::Quaterniond& q, int max_iterati
     const Vec3 torque = R.col(0).cross(F.col(0)) + R.col(1).cross(F.col(1)) + R.col(2).cross(F.col(2));
     const Mat3 B = F * R.transpose();
     const Mat3 H = B.trace() * Mat3::Identity() - 0.5 * (B + B.transpose());
-    const Eigen::LLT<Mat3> newton(H);
-    const Vec3 omega = newton.info() == Eigen::Success ? Vec3(newton.solve(torque))
-                                                       : Vec3(torque / (std::abs(B.trace()) + 1e-9));
-    const double angle = omega.norm();
-    if (angle < 1e-12) break;
-    q = (Eigen::Quaterniond(Eigen::AngleAxisd(angle, omega / angle)) * q).normalized();
+    // H is positive definite when its leading minors are (Sylvester); then ω = adj(H) τ / det H.
+    const double minor2 = H(0, 0) * H(1, 1) - H(0, 1) * H(0, 1), det = H.determinant();
+    const Vec3 omega = H(0, 0) > 0.0 && minor2 > 0.0 && det > 0.0 ? Vec3(cofactor(H) * torque / det)
+                                                                    : Vec3(torque / (std::abs(B.trace()) + 1e-9));
+    if (omega.squaredNorm() < 1e-24) break;
+    // exp([ω]) to second order, the quaternion (1, ω/2) normalised: the same fixed point, and
+    // no trigonometry.
+    q = (Eigen::Quaterniond(1.0, 0.5 * omega.x(), 0.5 * omega.y(), 0.5 * omega.z()) * q).normalized();
   }
 }
 

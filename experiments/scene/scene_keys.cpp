@@ -66,9 +66,9 @@ std::vector<SceneKey> scene_and_grain_keys() {
       integer("grains", "seed", closed(0, kLargestSeed), 1.0, "every random choice of the scene flows from it"),
       choice("grains", "body", {"rigid", "soft"}, std::string("rigid"),
              "rigid bodies, or soft tet meshes"),
-      choice("grains", "elasticity", {"corotated", "neo-hookean"}, std::string("corotated"),
-             "soft grains' tet material: corotated, or the paper's stable Neo-Hookean pair (the same at small "
-             "strain; the corotated pair is stable under XPBD at a third of the substeps)"),
+      choice("grains", "elasticity", {"neo-hookean", "corotated"}, std::string("neo-hookean"),
+             "soft grains' tet material: the paper's stable Neo-Hookean pair, or the corotated pair, the same at "
+             "small strain and stable under XPBD at a third of the substeps (docs/known-limits.md)"),
       number("grains", "young_pa", closed(1e3, 1e9), 1e5, "soft grains' Young's modulus [Pa]"),
       integer("grains", "min_vertices", closed(4, 1000), 20.0,
               "the fewest vertices of a grain's simulation mesh (Mesh_3, grains/simulation_mesh.hpp): soft grains' tets; "

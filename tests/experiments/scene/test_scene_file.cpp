@@ -88,7 +88,7 @@ TEST(SceneFile, KeysSetTheSettings) {
 count = 12
 body = "soft"
 young_pa = 2e5
-elasticity = "neo-hookean"
+elasticity = "corotated"
 min_vertices = 8
 max_vertices = 12
 [solver]
@@ -105,7 +105,7 @@ damping = false
   EXPECT_EQ(scene.grains.count, 12);
   EXPECT_EQ(scene.grains.body, xpbd::BodyKind::kSoft);
   EXPECT_EQ(scene.grains.young, 2e5);
-  EXPECT_EQ(scene.grains.elasticity, xpbd::TetMaterial::kStableNeoHookean);
+  EXPECT_EQ(scene.grains.elasticity, xpbd::TetMaterial::kCorotated);
   EXPECT_EQ(scene.grains.min_vertices, 8);
   EXPECT_EQ(scene.grains.max_vertices, 12);
   EXPECT_TRUE(scene.solver.vertex_block_descent);
@@ -141,7 +141,7 @@ TEST(SceneFile, MistakesNameTheFileTheLineAndTheKey) {
       {"[grains]\n\ncount = 0\n", "bad.toml:3: [grains] count = 0: expected an integer in [1, 100000]"},
       {"[grains]\ncount = 2.5\n", "bad.toml:2: [grains] count = 2.5: expected an integer"},
       {"[grains]\npoisson = 0.5\n", "bad.toml:2: [grains] poisson = 0.5: expected a number in (-1, 0.5)"},
-      {"[grains]\npoisson = 0\n", "bad.toml:2: [grains] poisson = 0: expected > 0 with elasticity = 'corotated'"},
+      {"[grains]\nelasticity = \"corotated\"\npoisson = 0\n", "bad.toml:3: [grains] poisson = 0: expected > 0 with elasticity = 'corotated'"},
       {"[grains]\nmin_vertices = 8\nmax_vertices = 6\n", "bad.toml:3: [grains] max_vertices = 6: expected at least min_vertices (8)"},
       {"[grains]\nmin_vertices = 80\n", "bad.toml:2: [grains] min_vertices = 80: expected at most max_vertices (60)"},
       {"[grains]\ncultivar = \"basmati\"\n", "bad.toml:2: [grains] cultivar = \"basmati\": expected one of 'japonica'"},

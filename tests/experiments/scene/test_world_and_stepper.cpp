@@ -113,9 +113,9 @@ TEST(Stepper, StepsAFrameWithTheScenesSubstepsAndMethod) {
   Scene scene;
   EXPECT_EQ(solver_settings(scene).substeps, 80);  // rigid
   scene.grains.body = xpbd::BodyKind::kSoft;
-  EXPECT_EQ(solver_settings(scene).substeps, 160);  // corotated tets
-  scene.grains.elasticity = xpbd::TetMaterial::kStableNeoHookean;
-  EXPECT_EQ(solver_settings(scene).substeps, 480);
+  EXPECT_EQ(solver_settings(scene).substeps, 480);  // the stable Neo-Hookean pair
+  scene.grains.elasticity = xpbd::TetMaterial::kCorotated;
+  EXPECT_EQ(solver_settings(scene).substeps, 160);
   scene.solver = {.fps = 60.0, .frames = 2, .substeps = 7, .iterations = 3, .vertex_block_descent = true};
   const xpbd::SolverSettings s = solver_settings(scene);
   EXPECT_EQ(s.substeps, 7);
