@@ -151,7 +151,7 @@ Particles make_particles(const TetMesh& mesh, double density);
 /// at small strain (the energy's λ is material.lambda + material.mu, see NeoHookeanTet; the
 /// corotated pair needs material.lambda > 0, a Poisson's ratio in (0, ½)). `rayleigh_time` τ [s] sets stiffness-proportional
 /// damping β = τ/α for both constraints, so that γ = αβ/h = τ/h (XPBD eq. 26); it damps the
-/// rates of ‖F‖ and det F only. `strain_rate_time` τ_E [s] sets the damping of every strain
+/// rates of C_D (‖F‖, or ‖F − R‖) and det F only. `strain_rate_time` τ_E [s] sets the damping of every strain
 /// rate (NeoHookeanTet::strain_rate_damping), which needs 3λ + 2μ > 0.
 void add_neo_hookean_tets(Model& model, const TetMesh& mesh, LameParameters material,
                           double rayleigh_time = 0.0, double strain_rate_time = 0.0,
