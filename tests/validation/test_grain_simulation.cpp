@@ -15,9 +15,22 @@
 namespace rice {
 namespace {
 
-TEST(GrainSimulation, GrainFallsAndRestsOnTheGroundWithItsRenderMeshAttached) {
+grains::GrainRecipe japonica() {
   grains::GrainRecipe recipe;
   recipe.cultivar = grains::cultivar_by_name("japonica");
+  return recipe;
+}
+
+/// Moves the model's lowest point `drop` above a ground plane with friction 0.5/0.4.
+void hold_over_ground(xpbd::Model& model, double drop) {
+  model.particles.x.col(2).array() += drop - model.particles.x.col(2).minCoeff();
+  model.ground = xpbd::GroundPlane{};
+  model.ground->static_friction = 0.5;
+  model.ground->dynamic_friction = 0.4;
+}
+
+TEST(GrainSimulation, GrainFallsAndRestsOnTheGroundWithItsRenderMeshAttached) {
+  const grains::GrainRecipe recipe = japonica();
   const grains::Grain grain = grains::make_grain(recipe, 3);
 
   // The same matrix types on both sides: no conversion.
@@ -30,10 +43,7 @@ TEST(GrainSimulation, GrainFallsAndRestsOnTheGroundWithItsRenderMeshAttached) {
   const double young = 2e4;  // soft cooked grain [Pa]
   xpbd::add_neo_hookean_tets(model, mesh, xpbd::lame_from_young_poisson(young, 0.3), 2e-3);
   const double drop = 2e-3;  // lowest point 2 mm above the ground
-  model.particles.x.col(2).array() += drop - model.particles.x.col(2).minCoeff();
-  model.ground = xpbd::GroundPlane{};
-  model.ground->static_friction = 0.5;
-  model.ground->dynamic_friction = 0.4;
+  hold_over_ground(model, drop);
 
   // h = 1/7200 s: under the time a pressure wave takes to cross a 1 mm edge (1.9e-4 s, the
   // Neo-Hookean pair's stability limit, README "Known limits"). At 40 substeps (h = 4.2e-4 s)
@@ -69,17 +79,12 @@ TEST(GrainSimulation, GrainFallsAndRestsOnTheGroundWithItsRenderMeshAttached) {
 /// Kinetic energy of a procedural grain dropped 2 mm onto the ground (friction 0.5/0.4) by
 /// XPBD at `substeps` a 30 fps frame and one iteration, E = 100 kPa, after `frames` frames.
 double energy_after_drop(xpbd::TetMaterial material, int substeps, int frames) {
-  grains::GrainRecipe recipe;
-  recipe.cultivar = grains::cultivar_by_name("japonica");
-  const grains::Grain grain = grains::make_grain(recipe, 3);
+  const grains::Grain grain = grains::make_grain(japonica(), 3);
   const xpbd::TetMesh mesh{grain.simulation.V, grain.simulation.T};
   xpbd::Model model;
   model.particles = xpbd::make_particles(mesh, grain.simulation_density);
   xpbd::add_neo_hookean_tets(model, mesh, xpbd::lame_from_young_poisson(1e5, 0.3), 1e-4, 0.0, material);
-  model.particles.x.col(2).array() += 2e-3 - model.particles.x.col(2).minCoeff();
-  model.ground = xpbd::GroundPlane{};
-  model.ground->static_friction = 0.5;
-  model.ground->dynamic_friction = 0.4;
+  hold_over_ground(model, 2e-3);
   xpbd::SolverSettings settings;
   settings.substeps = substeps;
   xpbd::Solver solver(model, settings);
@@ -88,9 +93,9 @@ double energy_after_drop(xpbd::TetMaterial material, int substeps, int frames) {
 }
 
 TEST(GrainSimulation, CorotatedGrainComesToRestAtAThirdOfTheNeoHookeanSubsteps) {
-  // The grain's sliver tets (dihedral angles down to 4°) kept the stable Neo-Hookean pair
-  // jittering at 1e-6 J under 480 substeps a frame (docs/known-limits.md); the corotated pair,
-  // whose gradients vanish at rest, lets it rest at 160.
+  // The stable Neo-Hookean pair needs 480 substeps a frame to let a grain rest (at 160 one
+  // grain in a scene keeps 4e-6 J, docs/known-limits.md); the corotated pair, zero at rest
+  // with its gradient along the strain, rests at 160 and at 40.
   for (const int substeps : {40, 160}) {
     const double energy = energy_after_drop(xpbd::TetMaterial::kCorotated, substeps, 60);
     EXPECT_LT(energy, 1e-10) << substeps << " substeps";
