@@ -60,7 +60,7 @@
 namespace {
 
 using namespace rice::xpbd;
-using namespace rice::xpbd::testing;
+using namespace rice::xpbd::test_support;
 
 constexpr double kTimeStep = 1.0 / 300.0;
 constexpr int kSubsteps = 10;

@@ -23,7 +23,7 @@ namespace {
 // OpenVDB's particle rasteriser drops spheres under this radius (its Nyquist limit).
 constexpr double kMinimumRadiusInVoxels = 1.5;
 
-void require(bool ok, const std::string& parameter, const std::string& expected) {
+void check_porosity(bool ok, const std::string& parameter, const std::string& expected) {
   if (!ok) throw std::invalid_argument("porosity parameter " + parameter + " must be " + expected);
 }
 
@@ -103,16 +103,16 @@ void for_each_active_voxel(const openvdb::FloatGrid& grid, Visit visit) {
 }  // namespace
 
 void validate(const PorosityParameters& p) {
-  require(p.bump_count >= 0, "bump_count", ">= 0");
-  require(p.bump_radius_min > 0.0 && p.bump_radius_min <= p.bump_radius_max, "bump radii",
+  check_porosity(p.bump_count >= 0, "bump_count", ">= 0");
+  check_porosity(p.bump_radius_min > 0.0 && p.bump_radius_min <= p.bump_radius_max, "bump radii",
           "0 < bump_radius_min <= bump_radius_max");
-  require(p.bump_depth >= 0.0 && p.bump_depth <= 1.0, "bump_depth", "in [0, 1]");
-  require(p.core_porosity >= 0.0 && p.core_porosity <= 0.9, "core_porosity", "in [0, 0.9]");
-  require(p.pore_radius_min > 0.0 && p.pore_radius_min <= p.pore_radius_max, "pore radii",
+  check_porosity(p.bump_depth >= 0.0 && p.bump_depth <= 1.0, "bump_depth", "in [0, 1]");
+  check_porosity(p.core_porosity >= 0.0 && p.core_porosity <= 0.9, "core_porosity", "in [0, 0.9]");
+  check_porosity(p.pore_radius_min > 0.0 && p.pore_radius_min <= p.pore_radius_max, "pore radii",
           "0 < pore_radius_min <= pore_radius_max");
-  require(p.skin_thickness >= 0.0, "skin_thickness", ">= 0");
-  require(p.voxel_size >= 0.0, "voxel_size", ">= 0 (0 picks the smallest radius / 1.5)");
-  require(p.band_width >= 2.0, "band_width", ">= 2 voxels");
+  check_porosity(p.skin_thickness >= 0.0, "skin_thickness", ">= 0");
+  check_porosity(p.voxel_size >= 0.0, "voxel_size", ">= 0 (0 picks the smallest radius / 1.5)");
+  check_porosity(p.band_width >= 2.0, "band_width", ">= 2 voxels");
 }
 
 double voxel_size_for(const PorosityParameters& p) {

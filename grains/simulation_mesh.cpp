@@ -31,7 +31,7 @@ using Triangulation = CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Se
 using Complex = CGAL::Mesh_complex_3_in_triangulation_3<Triangulation>;
 using Criteria = CGAL::Mesh_criteria_3<Triangulation>;
 
-void require(bool ok, const std::string& parameter, const std::string& expected) {
+void check_mesh(bool ok, const std::string& parameter, const std::string& expected) {
   if (!ok) throw std::invalid_argument("simulation mesh parameter " + parameter + " must be " + expected);
 }
 
@@ -157,16 +157,16 @@ void require_valid_tets(const VolumeMesh& mesh) {
 }  // namespace
 
 void validate(const SimulationMeshParameters& p) {
-  require(p.min_vertices >= 4 && p.min_vertices <= p.max_vertices, "vertex range",
+  check_mesh(p.min_vertices >= 4 && p.min_vertices <= p.max_vertices, "vertex range",
           "4 <= min_vertices <= max_vertices");
-  require(p.edge_size > 0.0, "edge_size", "positive");
-  require(p.facet_distance > 0.0, "facet_distance", "positive");
-  require(p.facet_angle_degrees > 0.0 && p.facet_angle_degrees <= 30.0, "facet_angle_degrees",
+  check_mesh(p.edge_size > 0.0, "edge_size", "positive");
+  check_mesh(p.facet_distance > 0.0, "facet_distance", "positive");
+  check_mesh(p.facet_angle_degrees > 0.0 && p.facet_angle_degrees <= 30.0, "facet_angle_degrees",
           "in (0, 30] (Mesh_3 terminates for angles up to 30)");
-  require(p.radius_edge_ratio >= 2.0, "radius_edge_ratio", ">= 2 (Mesh_3 terminates for ratios >= 2)");
-  require(p.exude_sliver_degrees >= 0.0 && p.exude_sliver_degrees < 60.0, "exude_sliver_degrees", "in [0, 60)");
-  require(p.perturb_sliver_degrees >= 0.0 && p.perturb_sliver_degrees < 60.0, "perturb_sliver_degrees", "in [0, 60)");
-  require(p.optimiser_iterations >= 1 && p.optimiser_iterations <= 1000, "optimiser_iterations", "in [1, 1000]");
+  check_mesh(p.radius_edge_ratio >= 2.0, "radius_edge_ratio", ">= 2 (Mesh_3 terminates for ratios >= 2)");
+  check_mesh(p.exude_sliver_degrees >= 0.0 && p.exude_sliver_degrees < 60.0, "exude_sliver_degrees", "in [0, 60)");
+  check_mesh(p.perturb_sliver_degrees >= 0.0 && p.perturb_sliver_degrees < 60.0, "perturb_sliver_degrees", "in [0, 60)");
+  check_mesh(p.optimiser_iterations >= 1 && p.optimiser_iterations <= 1000, "optimiser_iterations", "in [1, 1000]");
 }
 
 const char* optimiser_name(SimulationMeshParameters::Optimiser optimiser) {

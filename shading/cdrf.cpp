@@ -14,7 +14,6 @@
 namespace rice::shading {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 void check_arguments(double cos_theta, double sigma) {
   if (!(std::abs(cos_theta) <= 1.0) || !(sigma >= 0.0)) {
@@ -31,7 +30,7 @@ struct Integrand {
 double lobe_integrand(double phi, void* params) {
   const auto& p = *static_cast<const Integrand*>(params);
   const double s2 = p.sigma * p.sigma;
-  return std::cos(p.theta - phi) * std::exp(-phi * phi / (2.0 * s2)) / std::sqrt(2.0 * kPi * s2);
+  return std::cos(p.theta - phi) * std::exp(-phi * phi / (2.0 * s2)) / std::sqrt(2.0 * std::numbers::pi * s2);
 }
 
 struct WorkspaceDeleter {
@@ -54,12 +53,12 @@ double cdrf_integral(double cos_theta, double sigma) {
   // cos(θ − φ) > 0, i.e. φ ∈ θ + 2πk ± π/2) that meets [−12σ, 12σ] is integrated on its own,
   // so QAG never sees the clamp's kink.
   const double reach = 12.0 * sigma;
-  const int k_first = static_cast<int>(std::floor((-reach - params.theta - kPi / 2) / (2 * kPi)));
-  const int k_last = static_cast<int>(std::ceil((reach - params.theta + kPi / 2) / (2 * kPi)));
+  const int k_first = static_cast<int>(std::floor((-reach - params.theta - std::numbers::pi / 2) / (2 * std::numbers::pi)));
+  const int k_last = static_cast<int>(std::ceil((reach - params.theta + std::numbers::pi / 2) / (2 * std::numbers::pi)));
   double sum = 0.0;
   for (int k = k_first; k <= k_last; ++k) {
-    const double lo = std::max(params.theta + 2 * kPi * k - kPi / 2, -reach);
-    const double hi = std::min(params.theta + 2 * kPi * k + kPi / 2, reach);
+    const double lo = std::max(params.theta + 2 * std::numbers::pi * k - std::numbers::pi / 2, -reach);
+    const double hi = std::min(params.theta + 2 * std::numbers::pi * k + std::numbers::pi / 2, reach);
     if (lo >= hi) continue;
     double value = 0.0, error = 0.0;
     const int status = gsl_integration_qag(&f, lo, hi, 1e-14, 1e-13, kLimit, GSL_INTEG_GAUSS21,
@@ -79,12 +78,12 @@ double cdrf_series(double cos_theta, double sigma) {
   if (sigma == 0.0) return std::max(cos_theta, 0.0);
   const double theta = std::acos(cos_theta);
   const double s2 = sigma * sigma / 2.0;
-  double sum = 1.0 / kPi + 0.5 * std::exp(-s2) * cos_theta;
+  double sum = 1.0 / std::numbers::pi + 0.5 * std::exp(-s2) * cos_theta;
   for (int n = 2;; n += 2) {
     const double damping = std::exp(-n * n * s2);
     // Tail bound: Σ_{m ≥ n} |a_m| e^{−m²σ²/2} ≤ e^{−n²σ²/2} (2/π) / (n − 1).
-    if (damping * 2.0 / (kPi * (n - 1)) < 1e-15) break;
-    const double a_n = ((n / 2) % 2 == 1 ? 2.0 : -2.0) / (kPi * (n * n - 1.0));
+    if (damping * 2.0 / (std::numbers::pi * (n - 1)) < 1e-15) break;
+    const double a_n = ((n / 2) % 2 == 1 ? 2.0 : -2.0) / (std::numbers::pi * (n * n - 1.0));
     sum += a_n * damping * std::cos(n * theta);
   }
   return sum;

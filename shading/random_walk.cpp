@@ -19,7 +19,6 @@ namespace rice::shading {
 namespace {
 
 using Eigen::Vector3d;
-constexpr double kPi = std::numbers::pi;
 
 void check(const Medium& m, double radius, const RandomWalkOptions& o) {
   if (!(radius > 0.0) || !(m.scattering >= 0.0) || !(m.absorption >= 0.0) || !(m.scattering + m.absorption > 0.0) ||
@@ -51,7 +50,7 @@ BatchTally trace_batch(const Medium& medium, double radius, int bins, long long 
   BatchTally tally{std::vector<double>(bins, 0.0)};
   for (long long p = 0; p < photons; ++p) {
     // Uniform over the beam's disk; the beam travels along −z, so ℓ = +z.
-    const double rho = radius * std::sqrt(unit(rng)), angle = 2 * kPi * unit(rng);
+    const double rho = radius * std::sqrt(unit(rng)), angle = 2 * std::numbers::pi * unit(rng);
     const double px = rho * std::cos(angle), py = rho * std::sin(angle);
     Vector3d x(px, py, std::sqrt(std::max(0.0, radius * radius - rho * rho)));
     const Vector3d normal = x / radius;
@@ -66,7 +65,7 @@ BatchTally trace_batch(const Medium& medium, double radius, int bins, long long 
       if (free_path < to_boundary) {
         x += free_path * d;
         weight *= survival;
-        d = rotate_about(d, sample_henyey_greenstein(medium.anisotropy, unit(rng)), 2 * kPi * unit(rng));
+        d = rotate_about(d, sample_henyey_greenstein(medium.anisotropy, unit(rng)), 2 * std::numbers::pi * unit(rng));
         scattered = true;
       } else {
         x = (x + to_boundary * d).normalized() * radius;
@@ -75,7 +74,7 @@ BatchTally trace_batch(const Medium& medium, double radius, int bins, long long 
         const double out = weight * (1.0 - reflectance);
         if (scattered) {
           const double theta = std::acos(std::clamp(n.z(), -1.0, 1.0));
-          tally.bins[std::min(bins - 1, static_cast<int>(theta / kPi * bins))] += out;
+          tally.bins[std::min(bins - 1, static_cast<int>(theta / std::numbers::pi * bins))] += out;
           tally.escaped += out;
         } else {
           tally.ballistic += out;
@@ -114,7 +113,7 @@ ExitanceProfile sphere_exitance(const Medium& medium, double radius, const Rando
   profile.standard_error.assign(bins, 0.0);
   std::vector<double> sum_sq(bins, 0.0);
   for (int k = 0; k < bins; ++k) {
-    const double lo = kPi * k / bins, hi = kPi * (k + 1) / bins;
+    const double lo = std::numbers::pi * k / bins, hi = std::numbers::pi * (k + 1) / bins;
     profile.theta[k] = 0.5 * (lo + hi);
     const double band = std::cos(lo) - std::cos(hi);
     for (std::size_t b = 0; b < batches.size(); ++b) {

@@ -18,7 +18,6 @@ namespace {
 
 using Eigen::Vector3d;
 using Eigen::Vector3f;
-constexpr double kPi = std::numbers::pi;
 
 // A light as the bake sees it: a sun (sampled over its disc as the renderer does) or the
 // uniform sky (sampled over the sphere), and what its photons carry per unit disc area:
@@ -50,7 +49,7 @@ void walk(const RenderScene& scene, int instance, const Medium& medium, const Sh
     if (free_path < boundary->t) {
       x += free_path * d;
       weight *= survival;
-      d = rotate_about(d, sample_henyey_greenstein(medium.anisotropy, unit(rng)), 2 * kPi * unit(rng));
+      d = rotate_about(d, sample_henyey_greenstein(medium.anisotropy, unit(rng)), 2 * std::numbers::pi * unit(rng));
       scattered = true;
     } else {
       if (boundary->instance != instance) return;  // into another body (an overlap): lost
@@ -86,7 +85,7 @@ std::vector<std::vector<float>> bake_subsurface(RenderScene& scene, const std::v
   // The media are grey, so one walk serves all three channels: the light's mean.
   std::vector<PhotonSource> sources;
   for (const Sun& sun : lights.suns) sources.push_back({&sun, sun.sampler(), sun.irradiance.mean()});
-  if (!lights.environment.empty()) sources.push_back({nullptr, {}, 4.0 * kPi * lights.environment.constant.mean()});
+  if (!lights.environment.empty()) sources.push_back({nullptr, {}, 4.0 * std::numbers::pi * lights.environment.constant.mean()});
 
   std::vector<std::vector<float>> exitance;
   long long traced = 0;
@@ -100,7 +99,7 @@ std::vector<std::vector<float>> bake_subsurface(RenderScene& scene, const std::v
     std::vector<double> sum(static_cast<std::size_t>(scene.vertex_count(instance)), 0.0);
     for (std::size_t s = 0; s < sources.size(); ++s) {
       const PhotonSource& source = sources[s];
-      const double disc = kPi * radius * radius;
+      const double disc = std::numbers::pi * radius * radius;
       const double flux = disc * source.carried / static_cast<double>(settings.photons_per_light);
       const long long batches = (settings.photons_per_light + settings.batch - 1) / settings.batch;
       std::vector<std::vector<double>> partial(static_cast<std::size_t>(batches));
@@ -116,7 +115,7 @@ std::vector<std::vector<float>> bake_subsurface(RenderScene& scene, const std::v
             towards = source.sun ? source.sun_sampler.direction(a, b) : Environment::direction(a, b);
           }
           const auto [u, v] = tangent_frame(towards);
-          const double rho = radius * std::sqrt(unit(rng)), angle = 2 * kPi * unit(rng);
+          const double rho = radius * std::sqrt(unit(rng)), angle = 2 * std::numbers::pi * unit(rng);
           const Vector3d origin = centre.cast<double>() + 2.0 * radius * towards +
                                   rho * (std::cos(angle) * u + std::sin(angle) * v);
           const auto hit = scene.intersect({origin.cast<float>(), (-towards).cast<float>()});
@@ -133,7 +132,7 @@ std::vector<std::vector<float>> bake_subsurface(RenderScene& scene, const std::v
     std::vector<float> m(sum.size()), radiance(sum.size());
     for (std::size_t i = 0; i < sum.size(); ++i) {
       m[i] = area[i] > 0.0 ? static_cast<float>(sum[i] / area[i]) : 0.0f;
-      radiance[i] = static_cast<float>(m[i] / kPi);
+      radiance[i] = static_cast<float>(m[i] / std::numbers::pi);
     }
     scene.set_vertex_values(instance, std::move(radiance));
     exitance.push_back(std::move(m));

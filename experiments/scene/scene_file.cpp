@@ -19,12 +19,6 @@ namespace {
 
 const std::vector<std::string> kSections{"scene", "grains", "solver", "container", "emitter", "effects", "render"};
 
-std::string joined(const std::vector<std::string>& words) {
-  std::string out;
-  for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
-  return out;
-}
-
 toml::table parse_toml(std::string_view text, const std::string& source) {
   try {
     return toml::parse(text, std::string_view(source));

@@ -12,12 +12,6 @@
 namespace rice::experiments {
 namespace {
 
-std::string joined(const std::vector<std::string>& words) {
-  std::string out;
-  for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
-  return out;
-}
-
 /// A value as a file would write it, for messages.
 std::string shown(const toml::node& node) {
   if (const auto* text = node.as_string()) return '"' + text->get() + '"';
@@ -42,6 +36,12 @@ std::string in_quotes(std::string_view text) {
   std::string out(1, '\'');  // appended, not "'" + text: gcc 12 warns falsely (-Wrestrict) on that
   out.append(text);
   out.push_back('\'');
+  return out;
+}
+
+std::string joined(const std::vector<std::string>& words) {
+  std::string out;
+  for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
   return out;
 }
 

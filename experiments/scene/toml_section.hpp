@@ -20,6 +20,9 @@ std::string source_line(const std::string& source, const toml::source_region& re
 /// `text` in single quotes, for messages.
 std::string in_quotes(std::string_view text);
 
+/// The words separated by ", ", for messages.
+std::string joined(const std::vector<std::string>& words);
+
 class TomlSection {
  public:
   /// `table` may be null (the file has no such section: every key takes its default). `name`

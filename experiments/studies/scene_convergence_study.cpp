@@ -28,7 +28,7 @@ struct RunSetting {
   std::string name() const { return method + "_" + std::to_string(substeps) + "x" + std::to_string(iterations); }
 };
 
-struct Run {
+struct GridRun {
   RunSetting setting;
   SceneResult result;
   std::vector<xpbd::Vec3> centres;
@@ -56,7 +56,7 @@ std::vector<xpbd::Vec3> final_centres(const std::filesystem::path& run) {
 }
 
 /// One run of the scene, soft grains, without its render.
-Run run_one(const SceneConvergenceSettings& s, const RunSetting& setting, const std::filesystem::path& folder) {
+GridRun run_one(const SceneConvergenceSettings& s, const RunSetting& setting, const std::filesystem::path& folder) {
   Scene scene = read_scene_file(
       s.scene, {"grains.body=\"soft\"", "grains.count=" + std::to_string(s.count), "solver.frames=" + std::to_string(s.frames),
                 "solver.method=\"" + setting.method + "\"", "solver.substeps=" + std::to_string(setting.substeps),
@@ -64,15 +64,15 @@ Run run_one(const SceneConvergenceSettings& s, const RunSetting& setting, const 
   scene.render.reset();
   // Both methods solve the same problem, the paper's damping, so that they approach one answer.
   scene.solver.vbd_strain_rate_damping = false;
-  Run run{setting, run_scene(scene, folder / setting.name()), {}};
+  GridRun run{setting, run_scene(scene, folder / setting.name()), {}};
   run.centres = final_centres(folder / setting.name());
   return run;
 }
 
 /// Each run's errors against the reference (the last run), over the grains both placed.
-void compare(std::vector<Run>& runs) {
-  const Run& reference = runs.back();
-  for (Run& run : runs) {
+void compare(std::vector<GridRun>& runs) {
+  const GridRun& reference = runs.back();
+  for (GridRun& run : runs) {
     const size_t n = std::min(run.centres.size(), reference.centres.size());
     double sum = 0.0;
     for (size_t g = 0; g < n; ++g) sum += (run.centres[g] - reference.centres[g]).squaredNorm();
@@ -82,10 +82,10 @@ void compare(std::vector<Run>& runs) {
 }
 
 /// Marks the runs no other run beats in both wall time and top error (the reference aside).
-void mark_pareto_front(std::vector<Run>& runs) {
-  for (Run& a : runs) {
+void mark_pareto_front(std::vector<GridRun>& runs) {
+  for (GridRun& a : runs) {
     if (a.setting.reference) continue;
-    a.pareto = std::none_of(runs.begin(), runs.end(), [&](const Run& b) {
+    a.pareto = std::none_of(runs.begin(), runs.end(), [&](const GridRun& b) {
       return !b.setting.reference && &b != &a && b.result.simulation_seconds <= a.result.simulation_seconds &&
              b.top_error <= a.top_error &&
              (b.result.simulation_seconds < a.result.simulation_seconds || b.top_error < a.top_error);
@@ -93,11 +93,11 @@ void mark_pareto_front(std::vector<Run>& runs) {
   }
 }
 
-CsvTable table_of(const std::vector<Run>& runs) {
+CsvTable table_of(const std::vector<GridRun>& runs) {
   CsvTable table({"run", "method", "substeps", "iterations", "reference", "wall_s", "centre_rms_over_length",
                   "top_m", "top_error_m", "packing_fraction", "deepest_overlap_m", "kinetic_energy_j", "awake",
                   "pareto"});
-  for (const Run& r : runs)
+  for (const GridRun& r : runs)
     table.add_row({r.setting.name(), r.setting.method, cell(r.setting.substeps), cell(r.setting.iterations),
                    r.setting.reference ? "1" : "0", cell(r.result.simulation_seconds), cell(r.centre_error),
                    cell(r.result.top), cell(r.top_error), cell(r.result.packing_fraction),
@@ -106,15 +106,15 @@ CsvTable table_of(const std::vector<Run>& runs) {
   return table;
 }
 
-void plot(const std::filesystem::path& folder, const std::vector<Run>& runs) {
+void plot(const std::filesystem::path& folder, const std::vector<GridRun>& runs) {
   CsvTable front({"wall_s", "top_error_m"});
-  std::vector<const Run*> on_front;
-  for (const Run& r : runs)
+  std::vector<const GridRun*> on_front;
+  for (const GridRun& r : runs)
     if (r.pareto) on_front.push_back(&r);
   std::sort(on_front.begin(), on_front.end(),
-            [](const Run* a, const Run* b) { return a->result.simulation_seconds < b->result.simulation_seconds; });
+            [](const GridRun* a, const GridRun* b) { return a->result.simulation_seconds < b->result.simulation_seconds; });
   std::string title = "Pareto front:";
-  for (const Run* r : on_front) {
+  for (const GridRun* r : on_front) {
     front.add_row({cell(r->result.simulation_seconds), cell(r->top_error)});
     title += " " + r->setting.name();
   }
@@ -167,7 +167,7 @@ void scene_convergence_study_command(const SceneConvergenceSettings& s, const st
   make_output_folder(folder);
   const auto start = std::chrono::steady_clock::now();
   const std::vector<RunSetting> settings = grid(s);
-  std::vector<Run> runs;
+  std::vector<GridRun> runs;
   for (size_t k = 0; k < settings.size(); ++k) {
     std::printf("scene-convergence: run %zu/%zu, %s\n", k + 1, settings.size(), settings[k].name().c_str());
     runs.push_back(run_one(s, settings[k], folder));

@@ -3,7 +3,7 @@
 
 #include "grains/mesh_types.hpp"
 
-namespace rice::testing {
+namespace rice::test_support {
 
 /// A closed cube of `side` [m] about the origin, faces outward.
 inline grains::SurfaceMesh cube(double side) {
@@ -16,4 +16,4 @@ inline grains::SurfaceMesh cube(double side) {
   return mesh;
 }
 
-}  // namespace rice::testing
+}  // namespace rice::test_support

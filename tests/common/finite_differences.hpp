@@ -5,7 +5,7 @@
 #include <Eigen/Core>
 #include <functional>
 
-namespace rice::testing {
+namespace rice::test_support {
 
 /// ∂f/∂x by central differences with step h.
 inline Eigen::VectorXd fd_gradient(const std::function<double(const Eigen::VectorXd&)>& f,
@@ -40,4 +40,4 @@ inline double relative_error(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b,
   return (a - b).norm() / std::max({a.norm(), b.norm(), floor});
 }
 
-}  // namespace rice::testing
+}  // namespace rice::test_support

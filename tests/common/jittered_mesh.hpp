@@ -6,7 +6,7 @@
 
 #include "xpbd/tet_mesh.hpp"
 
-namespace rice::testing {
+namespace rice::test_support {
 
 /// make_box_tet_mesh(size, nx, ny, nz) with interior vertices displaced uniformly by up to
 /// `jitter` cells along each axis (jitter < 0.25 keeps every tet positively oriented).
@@ -25,4 +25,4 @@ inline xpbd::TetMesh jittered_box_mesh(const xpbd::Vec3& size, int nx, int ny, i
   return mesh;
 }
 
-}  // namespace rice::testing
+}  // namespace rice::test_support

@@ -22,9 +22,9 @@
 namespace rice::fem {
 namespace {
 
-using testing::fd_gradient;
-using testing::fd_jacobian;
-using testing::relative_error;
+using test_support::fd_gradient;
+using test_support::fd_jacobian;
+using test_support::relative_error;
 
 // Central differences with a step of 1e-6 of the body size: truncation ~1e-12, round-off
 // ~1e-10 relative, so 1e-6 separates right from wrong by orders of magnitude.
@@ -74,7 +74,7 @@ void check_form(const Form& form, const Positions& x, double scale) {
 /// A small irregular Neo-Hookean block (size 1 cm) with springs, volumes and attachments,
 /// all with damping (the tets with both kinds).
 xpbd::Model make_model() {
-  const xpbd::TetMesh mesh = testing::jittered_box_mesh(xpbd::Vec3(0.02, 0.01, 0.01), 2, 1, 1, 0.0);
+  const xpbd::TetMesh mesh = test_support::jittered_box_mesh(xpbd::Vec3(0.02, 0.01, 0.01), 2, 1, 1, 0.0);
   xpbd::Model model;
   model.particles = xpbd::make_particles(mesh, 1000.0);
   xpbd::add_neo_hookean_tets(model, mesh, xpbd::lame_from_young_poisson(1e5, 0.3), 0.01, 0.02);
@@ -195,11 +195,11 @@ TEST(FormDerivatives, SphereContactBarriersMatchFiniteDifferences) {
   // half-space, every gap inside (0, d̂); particles jittered so no pair is aligned.
   const double dhat = 1e-4;
   xpbd::Model model;
-  xpbd::testing::add_grain(model, xpbd::BodyKind::kSoft, xpbd::Vec3::Zero());
-  xpbd::testing::add_grain(model, xpbd::BodyKind::kSoft,
-                           xpbd::Vec3(0.3e-3, 0.2e-3, xpbd::testing::kGrainThickness + 0.3 * dhat));
+  xpbd::test_support::add_grain(model, xpbd::BodyKind::kSoft, xpbd::Vec3::Zero());
+  xpbd::test_support::add_grain(model, xpbd::BodyKind::kSoft,
+                           xpbd::Vec3(0.3e-3, 0.2e-3, xpbd::test_support::kGrainThickness + 0.3 * dhat));
   const xpbd::Vec3 normal = xpbd::Vec3(0.02, 0.0, 1.0).normalized();
-  model.colliders.push_back(xpbd::testing::half_space(normal, -0.5 * dhat, 0.0, 0.0));
+  model.colliders.push_back(xpbd::test_support::half_space(normal, -0.5 * dhat, 0.0, 0.0));
   std::mt19937 random(11);
   std::uniform_real_distribution<double> jitter(-0.05 * dhat, 0.05 * dhat);
   for (int i = 0; i < model.particles.size(); ++i)

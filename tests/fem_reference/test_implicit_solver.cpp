@@ -16,7 +16,7 @@ namespace {
 using xpbd::Vec3;
 
 xpbd::Model block(int n, double young = 1e5) {
-  const xpbd::TetMesh mesh = testing::jittered_box_mesh(Vec3::Constant(0.01), n, n, n, 0.15, 3);
+  const xpbd::TetMesh mesh = test_support::jittered_box_mesh(Vec3::Constant(0.01), n, n, n, 0.15, 3);
   xpbd::Model model;
   model.particles = xpbd::make_particles(mesh, 1000.0);
   xpbd::add_neo_hookean_tets(model, mesh, xpbd::lame_from_young_poisson(young, 0.3));
@@ -143,9 +143,9 @@ TEST(ImplicitSolver, CollisionSpheresCarryTheUpperOfTwoStackedGrains) {
   // and no two spheres overlap.
   const BarrierSettings barrier{.activation_distance = 1e-5, .stiffness = 1e3};
   xpbd::Model model;
-  xpbd::testing::add_grain(model, xpbd::BodyKind::kSoft, xpbd::Vec3::Zero());
-  const int upper = xpbd::testing::add_grain(
-      model, xpbd::BodyKind::kSoft, xpbd::Vec3(0.0, 0.0, xpbd::testing::kGrainThickness + 0.5 * barrier.activation_distance));
+  xpbd::test_support::add_grain(model, xpbd::BodyKind::kSoft, xpbd::Vec3::Zero());
+  const int upper = xpbd::test_support::add_grain(
+      model, xpbd::BodyKind::kSoft, xpbd::Vec3(0.0, 0.0, xpbd::test_support::kGrainThickness + 0.5 * barrier.activation_distance));
   const xpbd::Body& top = model.bodies[upper];
   std::vector<int> bottom;
   for (int i = 0; i < model.bodies[0].particle_count; ++i)
@@ -154,8 +154,8 @@ TEST(ImplicitSolver, CollisionSpheresCarryTheUpperOfTwoStackedGrains) {
   const double top_z = model.particles.x.middleRows(top.first_particle, top.particle_count).col(2).maxCoeff();
   for (int i = top.first_particle; i < top.first_particle + top.particle_count; ++i) {
     const xpbd::Vec3 x = model.particles.x.row(i).transpose();
-    const bool corner = x.z() == top_z && (x.x() == 0.0 || std::abs(x.x() - xpbd::testing::kGrainLength) < 1e-12) &&
-                        (x.y() == 0.0 || std::abs(x.y() - xpbd::testing::kGrainWidth) < 1e-12);
+    const bool corner = x.z() == top_z && (x.x() == 0.0 || std::abs(x.x() - xpbd::test_support::kGrainLength) < 1e-12) &&
+                        (x.y() == 0.0 || std::abs(x.y() - xpbd::test_support::kGrainWidth) < 1e-12);
     if (corner) model.attachments.push_back({i, x, 1.0});  // α = 1 m/N
   }
   ASSERT_EQ(model.attachments.size(), 4u);

@@ -40,7 +40,7 @@ double run_and_check(xpbd::Model& model, double h, int steps) {
 TEST(ReferenceHardCases, NearRigidChainKeepsItsLength) {
   // α = 1e-12 m/N: springs of 10¹² N/m. The stretch under a swinging 10 kg chain's tension
   // (≲ 10³ N) is ≲ 1e-9 m, i.e. a strain under 1e-8.
-  xpbd::Model model = xpbd::testing::spring_chain(10, 1e-12, 1.0);
+  xpbd::Model model = xpbd::test_support::spring_chain(10, 1e-12, 1.0);
   EXPECT_LT(run_and_check(model, 1.0 / 600, 300), 1e-8);
 }
 
@@ -48,12 +48,12 @@ TEST(ReferenceHardCases, MassRatioOneToTenThousandStaysAccurate) {
   // Newton solves the coupled system directly, so the heavy end does not stretch the chain
   // the way Gauss–Seidel lets it: the swinging 10⁴ kg end pulls with ≲ 3·10⁴·g ≈ 3·10⁵ N,
   // which on α = 1e-9 m/N is a physical strain ≲ 3e-3.
-  xpbd::Model model = xpbd::testing::spring_chain(10, 1e-9, 1e4);
+  xpbd::Model model = xpbd::test_support::spring_chain(10, 1e-9, 1e4);
   EXPECT_LT(run_and_check(model, 1.0 / 600, 300), 5e-3);
 }
 
 TEST(ReferenceHardCases, FullyInvertedMeshRecovers) {
-  xpbd::Model model = xpbd::testing::neo_hookean_block(0.05, 2, 1e5, 0.3, 1e-3);
+  xpbd::Model model = xpbd::test_support::neo_hookean_block(0.05, 2, 1e5, 0.3, 1e-3);
   const xpbd::TetMesh mesh = xpbd::make_box_tet_mesh(Vec3::Constant(0.05), 2, 2, 2);
   model.particles.x.col(0) *= -1.0;  // mirror: every tet inverted
   ASSERT_LT(xpbd::tet_volumes(model.particles.x, mesh.T).maxCoeff(), 0.0);
@@ -66,7 +66,7 @@ TEST(ReferenceHardCases, FullyInvertedMeshRecovers) {
 TEST(ReferenceHardCases, HundredTimesLargerTimeStepIsStableAndDissipative) {
   // The cantilever that XPBD's hard case runs at 1/4800 s, here at 100× that step: backward
   // Euler stays stable, every Newton solve converges, and it damps the swing to near rest.
-  xpbd::Model model = xpbd::testing::neo_hookean_cantilever(10, 1e7, 0.0);
+  xpbd::Model model = xpbd::test_support::neo_hookean_cantilever(10, 1e7, 0.0);
   run_and_check(model, 100.0 / 4800, 60);
   EXPECT_LT(xpbd::max_speed(model.particles), 0.05);
 }
@@ -123,7 +123,7 @@ TEST(ReferenceHardCases, TwentyMetresPerSecondImpactStaysAboveTheGround) {
   // the ground at 20 m/s, 1.7 cm per step at h = 1/1200 s. The barrier (d̂ = 0.1 mm) must keep
   // every particle above the plane at every step, the energy must fall, and the block bounce
   // back up or come to rest, untangled.
-  xpbd::Model model = xpbd::testing::neo_hookean_block(0.02, 2, 1e5, 0.3, 1e-3);
+  xpbd::Model model = xpbd::test_support::neo_hookean_block(0.02, 2, 1e5, 0.3, 1e-3);
   const xpbd::TetMesh mesh = xpbd::make_box_tet_mesh(Vec3::Constant(0.02), 2, 2, 2);
   model.gravity = Vec3(0.0, 0.0, -9.81);
   model.particles.x.col(2).array() += 0.001;

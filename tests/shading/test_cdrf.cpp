@@ -13,7 +13,6 @@
 namespace rice::shading {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 TEST(Cdrf, QuadratureMatchesTheFourierSeries) {
   for (double sigma : {0.05, 0.2, 0.5, 1.0, 2.0, 4.0, 6.0}) {
@@ -28,9 +27,9 @@ TEST(Cdrf, ZeroWidthIsTheClampedCosine) {
     EXPECT_EQ(cdrf_integral(c, 0.0), std::max(c, 0.0));
     // A narrow Gaussian moves f_r by at most σ/sqrt(2π), the value it takes at the terminator.
     const double sigma = 1e-4;
-    EXPECT_LE(std::abs(cdrf_integral(c, sigma) - std::max(c, 0.0)), sigma / std::sqrt(2 * kPi) + 1e-12);
+    EXPECT_LE(std::abs(cdrf_integral(c, sigma) - std::max(c, 0.0)), sigma / std::sqrt(2 * std::numbers::pi) + 1e-12);
   }
-  EXPECT_NEAR(cdrf_integral(0.0, 1e-4), 1e-4 / std::sqrt(2 * kPi), 1e-12);
+  EXPECT_NEAR(cdrf_integral(0.0, 1e-4), 1e-4 / std::sqrt(2 * std::numbers::pi), 1e-12);
 }
 
 // The odd part of f_r is the blurred cosine itself: f(θ) − f(π − θ) = exp(−σ²/2) cos θ.
@@ -49,19 +48,19 @@ double integrate_over_theta(double sigma, bool sphere) {
   const int n = 4000;  // midpoint rule; the integrand is smooth for σ > 0
   double sum = 0.0;
   for (int k = 0; k < n; ++k) {
-    const double theta = kPi * (k + 0.5) / n;
-    sum += cdrf_integral(std::cos(theta), sigma) * (sphere ? 2 * kPi * std::sin(theta) : 2.0);
+    const double theta = std::numbers::pi * (k + 0.5) / n;
+    sum += cdrf_integral(std::cos(theta), sigma) * (sphere ? 2 * std::numbers::pi * std::sin(theta) : 2.0);
   }
-  return sum * kPi / n;
+  return sum * std::numbers::pi / n;
 }
 
 double sphere_energy_series(double sigma) {
-  double sum = 2.0 / kPi;
+  double sum = 2.0 / std::numbers::pi;
   for (int n = 2; n < 4000; n += 2) {
-    const double a_n = ((n / 2) % 2 == 1 ? 2.0 : -2.0) / (kPi * (n * n - 1.0));
+    const double a_n = ((n / 2) % 2 == 1 ? 2.0 : -2.0) / (std::numbers::pi * (n * n - 1.0));
     sum += a_n * std::exp(-n * n * sigma * sigma / 2) * 2.0 / (1.0 - n * n);
   }
-  return 2 * kPi * sum;
+  return 2 * std::numbers::pi * sum;
 }
 
 TEST(Cdrf, EnergyOnTheCircleIsConservedAndOnTheSphereFollowsTheSeries) {
@@ -69,12 +68,12 @@ TEST(Cdrf, EnergyOnTheCircleIsConservedAndOnTheSphereFollowsTheSeries) {
     EXPECT_NEAR(integrate_over_theta(sigma, false), 2.0, 1e-7) << "sigma " << sigma;
     EXPECT_NEAR(integrate_over_theta(sigma, true), sphere_energy_series(sigma), 1e-6) << "sigma " << sigma;
   }
-  EXPECT_NEAR(sphere_energy_series(1e-3), kPi, 1e-5);
+  EXPECT_NEAR(sphere_energy_series(1e-3), std::numbers::pi, 1e-5);
   EXPECT_NEAR(sphere_energy_series(6.0), 4.0, 1e-7);
 }
 
 TEST(Cdrf, WideGaussianFlattensToOneOverPi) {
-  for (double c : {-1.0, 0.0, 1.0}) EXPECT_NEAR(cdrf_integral(c, CdrfTable::kSigmaMax), 1 / kPi, 2e-8);
+  for (double c : {-1.0, 0.0, 1.0}) EXPECT_NEAR(cdrf_integral(c, CdrfTable::kSigmaMax), 1 / std::numbers::pi, 2e-8);
 }
 
 TEST(Cdrf, RefusesArgumentsOutsideTheDomain) {

@@ -10,9 +10,9 @@
 namespace rice::shading {
 namespace {
 
-using testing::ellipsoid;
-using testing::ellipsoid_mean_curvature;
-using testing::icosphere;
+using test_support::ellipsoid;
+using test_support::ellipsoid_mean_curvature;
+using test_support::icosphere;
 
 // Largest relative error of H against the ellipsoid's (a sphere when a = b = c).
 double worst_relative_error(int subdivisions, double a, double b, double c, const CurvatureOptions& options = {}) {

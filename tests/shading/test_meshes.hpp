@@ -7,7 +7,7 @@
 #include <map>
 #include <utility>
 
-namespace rice::shading::testing {
+namespace rice::shading::test_support {
 
 struct TestMesh {
   MeshVertices V;
@@ -60,4 +60,4 @@ inline double ellipsoid_mean_curvature(const Eigen::Vector3d& p, double a, doubl
   return (a2 + b2 + c2 - p.squaredNorm()) / (2 * a2 * b2 * c2 * std::pow(q, 1.5));
 }
 
-}  // namespace rice::shading::testing
+}  // namespace rice::shading::test_support

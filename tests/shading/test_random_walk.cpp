@@ -16,7 +16,6 @@
 namespace rice::shading {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 TEST(Fresnel, NormalIncidenceGrazingAndTotalInternalReflection) {
   const double eta = 1.45;
@@ -49,7 +48,7 @@ TEST(RandomWalk, WithoutAbsorptionOrInterfaceEveryPhotonComesOut) {
   // Exitance over the sphere, Σ M_k 2π r² Δcos θ_k, over the beam's flux E π r², is the escaped fraction.
   double total = 0.0;
   for (std::size_t k = 0; k < p.theta.size(); ++k) {
-    const double lo = kPi * k / p.theta.size(), hi = kPi * (k + 1) / p.theta.size();
+    const double lo = std::numbers::pi * k / p.theta.size(), hi = std::numbers::pi * (k + 1) / p.theta.size();
     total += p.exitance[k] * 2.0 * (std::cos(lo) - std::cos(hi));
   }
   EXPECT_NEAR(total, p.escaped, 1e-12);
@@ -103,7 +102,7 @@ TEST(Sigma0Fit, RecoversAKnownWidthFromExactData) {
   std::vector<ExitanceSample> samples;
   for (double radius : {0.5e-3, 1e-3, 2e-3}) {
     for (int k = 0; k < 24; ++k) {
-      const double theta = kPi * (k + 0.5) / 24;
+      const double theta = std::numbers::pi * (k + 0.5) / 24;
       samples.push_back({theta, 1.0 / radius, 0.8 * cdrf_integral(std::cos(theta), 0.4e-3 / radius)});
     }
   }

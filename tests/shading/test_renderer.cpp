@@ -21,15 +21,15 @@ const CdrfTable& table() {
 }
 
 // Two triangles: the square [−h, h]² at height z, facing +z.
-testing::TestMesh square(double h, double z) {
-  testing::TestMesh m{MeshVertices(4, 3), MeshTriangles(2, 3)};
+test_support::TestMesh square(double h, double z) {
+  test_support::TestMesh m{MeshVertices(4, 3), MeshTriangles(2, 3)};
   m.V << -h, -h, z, h, -h, z, h, h, z, -h, h, z;
   m.F << 0, 1, 2, 0, 2, 3;
   return m;
 }
 
 // Adds `mesh` as its own prototype, placed where it is, with `material`.
-void place(RenderScene& scene, const testing::TestMesh& mesh, int material = 0) {
+void place(RenderScene& scene, const test_support::TestMesh& mesh, int material = 0) {
   scene.add_instance(scene.add_prototype(mesh.V, mesh.F), Eigen::Affine3d::Identity(), material);
 }
 
@@ -46,7 +46,7 @@ Camera looking_down(double height, double fov) {
 // (pbrt's furnace-style known answer), with ambient occlusion on: nothing occludes it.
 TEST(Renderer, DiffuseSphereInAUniformEnvironmentReflectsItsAlbedo) {
   RenderScene scene;
-  const auto sphere = testing::icosphere(5);
+  const auto sphere = test_support::icosphere(5);
   place(scene, sphere);
   scene.commit();
   Lights lights;
@@ -86,7 +86,7 @@ TEST(Renderer, LambertianPlaneUnderTheSun) {
 TEST(Renderer, RiceSphereFollowsTheCdrfPastTheTerminator) {
   const double radius = 2e-3, sigma0 = 1e-3;  // σ = 0.5
   RenderScene scene;
-  const auto sphere = testing::icosphere(5);
+  const auto sphere = test_support::icosphere(5);
   const Eigen::VectorXd kappa = Eigen::VectorXd::Constant(sphere.V.rows(), 1.0);  // unit sphere: κ = 1
   scene.add_instance(scene.add_prototype(sphere.V, sphere.F, kappa), Eigen::Affine3d(Eigen::Scaling(radius)), 0);
   scene.commit();
@@ -138,7 +138,7 @@ TEST(Renderer, ShadowsAreASwitch) {
 
 TEST(Renderer, SameSeedSameImageOnAnyThreadCount) {
   RenderScene scene;
-  const auto sphere = testing::icosphere(3);
+  const auto sphere = test_support::icosphere(3);
   place(scene, sphere);
   scene.commit();
   Lights lights;
@@ -157,7 +157,7 @@ TEST(Renderer, SameSeedSameImageOnAnyThreadCount) {
 
 TEST(Renderer, InstancesMoveAndScaleTheirPrototype) {
   RenderScene scene;
-  const auto sphere = testing::icosphere(3);
+  const auto sphere = test_support::icosphere(3);
   const int p = scene.add_prototype(sphere.V, sphere.F, Eigen::VectorXd::Constant(sphere.V.rows(), 1.0));
   Eigen::Affine3d moved = Eigen::Translation3d(5, 0, 0) * Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()) * Eigen::Scaling(2.0);
   scene.add_instance(p, moved, 0);
@@ -175,7 +175,7 @@ TEST(Renderer, InstancesMoveAndScaleTheirPrototype) {
 
 TEST(Renderer, RefusesBadSettingsAndMaterials) {
   RenderScene scene;
-  const auto sphere = testing::icosphere(1);
+  const auto sphere = test_support::icosphere(1);
   place(scene, sphere, 3);
   scene.commit();
   const std::vector<Material> materials(1);

@@ -19,12 +19,12 @@ const Medium kMedium{4000.0, 10.0, 0.0, 1.45};
 struct Baked {
   std::unique_ptr<RenderScene> scene;
   std::vector<float> exitance;
-  testing::TestMesh mesh;
+  test_support::TestMesh mesh;
 };
 
 // A sphere of radius 1 mm (icosphere level 4) under a sun of irradiance 1 along +z.
 Baked bake_sphere(long long photons, std::uint64_t seed) {
-  Baked b{std::make_unique<RenderScene>(), {}, testing::icosphere(4)};
+  Baked b{std::make_unique<RenderScene>(), {}, test_support::icosphere(4)};
   b.scene->add_instance(b.scene->add_prototype(b.mesh.V, b.mesh.F), Eigen::Affine3d(Eigen::Scaling(kRadius)), 0);
   b.scene->commit();
   Lights lights;

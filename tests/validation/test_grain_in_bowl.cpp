@@ -39,7 +39,7 @@ TEST_F(GrainInBowl, TheGridReadsDistancesAndSigns) {
 
 TEST_F(GrainInBowl, ADroppedGrainRestsOnTheInsideBottom) {
   xpbd::Model model;
-  const int grain = xpbd::testing::add_grain(model, xpbd::BodyKind::kRigid,
+  const int grain = xpbd::test_support::add_grain(model, xpbd::BodyKind::kRigid,
                                              xpbd::Vec3(0.004, -0.0015, inside_bottom() + 0.03));
   xpbd::Collider bowl;
   bowl.shape = xpbd::ColliderShape::kDistanceGrid;
@@ -60,7 +60,7 @@ TEST_F(GrainInBowl, ADroppedGrainRestsOnTheInsideBottom) {
   for (int s = 0; s < body.sphere_count(); ++s)
     clearance = std::min(clearance, xpbd::sample(**grid_, xpbd::sphere_centre(model, body, s)).distance - body.radii[s]);
   EXPECT_NEAR(clearance, 0.0, 0.3 * kSpacing);
-  const xpbd::Vec3 centre = xpbd::testing::body_centre(model, grain);
+  const xpbd::Vec3 centre = xpbd::test_support::body_centre(model, grain);
   EXPECT_LT(centre.z(), inside_bottom() + 0.01);  // at the bottom, not caught on the wall
   EXPECT_LT(centre.head<2>().norm(), 0.02);
   EXPECT_LT(model.rigid_bodies[0].v.norm(), 1e-3);

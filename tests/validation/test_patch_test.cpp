@@ -23,7 +23,7 @@ struct PatchResult {
 PatchResult run_patch_test(const Mat3& A, const Vec3& b) {
   const int n = 4;
   const double size = 0.01;
-  const xpbd::TetMesh mesh = testing::jittered_box_mesh(Vec3::Constant(size), n, n, n, 0.2, 11);
+  const xpbd::TetMesh mesh = test_support::jittered_box_mesh(Vec3::Constant(size), n, n, n, 0.2, 11);
   xpbd::Model model;
   model.particles = xpbd::make_particles(mesh, 1000.0);
   xpbd::add_neo_hookean_tets(model, mesh, xpbd::lame_from_young_poisson(1e5, 0.35));

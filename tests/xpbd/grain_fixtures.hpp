@@ -9,7 +9,7 @@
 #include "xpbd/body.hpp"
 #include "xpbd/model.hpp"
 
-namespace rice::xpbd::testing {
+namespace rice::xpbd::test_support {
 
 constexpr double kGrainLength = 7e-3, kGrainWidth = 3e-3, kGrainThickness = 2e-3;
 constexpr double kGrainDensity = 1.1e3;
@@ -89,4 +89,4 @@ inline void add_open_box(Model& model, double half_width) {
     model.colliders.push_back(half_space(n, -half_width, 0.3, 0.2));
 }
 
-}  // namespace rice::xpbd::testing
+}  // namespace rice::xpbd::test_support

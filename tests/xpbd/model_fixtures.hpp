@@ -5,7 +5,7 @@
 
 #include "xpbd/model.hpp"
 
-namespace rice::xpbd::testing {
+namespace rice::xpbd::test_support {
 
 /// A Neo-Hookean block [0, size]³ of n³ cubes (6 tets each), gravity off unless asked.
 inline Model neo_hookean_block(double size, int n, double young = 1e5, double poisson = 0.3,
@@ -50,4 +50,4 @@ inline void rotate(Model& model, const Mat3& R) {
   model.particles.x = (model.particles.x * R.transpose()).eval();
 }
 
-}  // namespace rice::xpbd::testing
+}  // namespace rice::xpbd::test_support

@@ -22,7 +22,7 @@
 namespace rice::xpbd {
 namespace {
 
-using namespace testing;
+using namespace test_support;
 
 constexpr double kHalfWidth = 0.018;  // a 3.6 cm square box
 

@@ -15,9 +15,9 @@
 namespace rice::xpbd {
 namespace {
 
-using testing::fd_gradient;
-using testing::fd_jacobian;
-using testing::relative_error;
+using test_support::fd_gradient;
+using test_support::fd_jacobian;
+using test_support::relative_error;
 
 constexpr double kGradientTolerance = 1e-6;  // relative, central differences
 constexpr double kHessianTolerance = 1e-5;

@@ -17,7 +17,7 @@
 namespace rice::xpbd {
 namespace {
 
-using namespace testing;
+using namespace test_support;
 
 class GrainContact : public ::testing::TestWithParam<BodyKind> {};
 

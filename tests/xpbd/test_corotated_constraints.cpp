@@ -15,9 +15,9 @@
 namespace rice::xpbd {
 namespace {
 
-using testing::fd_gradient;
-using testing::fd_jacobian;
-using testing::relative_error;
+using test_support::fd_gradient;
+using test_support::fd_jacobian;
+using test_support::relative_error;
 
 Eigen::VectorXd vec(const Mat3& F) { return Eigen::Map<const Vec9>(F.data()); }
 Mat3 unvec(const Eigen::VectorXd& f) { return Eigen::Map<const Mat3>(f.data()); }

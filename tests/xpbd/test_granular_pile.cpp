@@ -13,7 +13,7 @@
 namespace rice::xpbd {
 namespace {
 
-using namespace testing;
+using namespace test_support;
 
 constexpr double kBoxHalfWidth = 0.02;  // a 4 cm square box
 

@@ -12,9 +12,9 @@
 namespace rice::xpbd {
 namespace {
 
-using testing::neo_hookean_block;
-using testing::neo_hookean_cantilever;
-using testing::spring_chain;
+using test_support::neo_hookean_block;
+using test_support::neo_hookean_cantilever;
+using test_support::spring_chain;
 
 double max_relative_stretch(const Model& model) {
   double worst = 0.0;

@@ -15,7 +15,7 @@
 namespace rice::xpbd {
 namespace {
 
-using namespace testing;
+using namespace test_support;
 
 /// Two spheres' corners (particles 0–3 and 4–7) with weights summing to ±1.
 LinearPoint pair_point() {
@@ -145,7 +145,7 @@ TEST(ParticleContacts, ASoftGrainRestsOnAPlaneAtOneStepPerFrame) {
 namespace rice::xpbd {
 namespace {
 
-using namespace testing;
+using namespace test_support;
 
 SolverSettings vbd_settings(double time_step, int iterations) {
   return {.time_step = time_step, .substeps = 1, .iterations = iterations, .method = Method::kVbd,

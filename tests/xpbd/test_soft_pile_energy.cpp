@@ -21,9 +21,9 @@
 namespace rice::xpbd {
 namespace {
 
-using namespace testing;
+using namespace test_support;
 
-constexpr double kBoxHalfWidth = 0.015;  // a 3 cm square box
+constexpr double kClosedBoxHalfWidth = 0.015;  // a 3 cm square box
 
 /// 100 soft grains on a 4 × 4 lattice, 7 layers, 7.5 mm apart, over a closed box; bonds of
 /// 15 grain weights (japonica's stickiness), μ_s = 0.5 and μ_k = 0.4 between grains.
@@ -33,7 +33,7 @@ Model sticky_soft_grains() {
   model.contact.dynamic_friction = 0.4;
   model.contact.cohesion = true;
   model.sleep.enabled = true;
-  add_open_box(model, kBoxHalfWidth);
+  add_open_box(model, kClosedBoxHalfWidth);
   const double weight = kGrainDensity * kGrainLength * kGrainWidth * kGrainThickness * 9.81;
   for (int k = 0; k < 100; ++k) {
     const int layer = k / 16, i = k % 4, j = (k / 4) % 4;

@@ -17,10 +17,10 @@
 namespace rice::xpbd {
 namespace {
 
-using testing::neo_hookean_block;
-using testing::neo_hookean_cantilever;
-using testing::rotate;
-using testing::spring_chain;
+using test_support::neo_hookean_block;
+using test_support::neo_hookean_cantilever;
+using test_support::rotate;
+using test_support::spring_chain;
 
 const Mat3 kRotation =
     Eigen::AngleAxisd(0.7, Vec3(1.0, 2.0, -0.5).normalized()).toRotationMatrix();
@@ -37,10 +37,10 @@ TEST(ElasticEnergy, GradientMatchesFiniteDifferencesOfTheWholeModel) {
     return elastic_energy(model);
   };
   const Eigen::VectorXd q0 = Eigen::Map<const Eigen::VectorXd>(x0.data(), x0.size());
-  const Eigen::VectorXd g_fd = rice::testing::fd_gradient(energy_at, q0, 1e-8);
+  const Eigen::VectorXd g_fd = rice::test_support::fd_gradient(energy_at, q0, 1e-8);
   model.particles.x = x0;
   const Positions g = elastic_energy_gradient(model);
-  EXPECT_LT(rice::testing::relative_error(Eigen::Map<const Eigen::VectorXd>(g.data(), g.size()),
+  EXPECT_LT(rice::test_support::relative_error(Eigen::Map<const Eigen::VectorXd>(g.data(), g.size()),
                                           g_fd, 1e-12),
             1e-5);
 }

@@ -18,7 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_bytes(const fs::path& path) {
+std::string bytes_of(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
@@ -31,9 +31,9 @@ TEST(Output, AtomicWritesReplaceWholeFilesAndLeaveNothingElse) {
   write_file_atomically(folder / "table.csv", "a,b\n3,4\n5,6\n");
   write_file_atomically(folder / "mesh.txt", [](std::ostream& out) { out << "streamed\n"; });
   write_png(folder / "image.png", RgbImage(3, 2));
-  EXPECT_EQ(read_bytes(folder / "table.csv"), "a,b\n3,4\n5,6\n");
-  EXPECT_EQ(read_bytes(folder / "mesh.txt"), "streamed\n");
-  EXPECT_TRUE(read_bytes(folder / "image.png").starts_with("\x89PNG"));
+  EXPECT_EQ(bytes_of(folder / "table.csv"), "a,b\n3,4\n5,6\n");
+  EXPECT_EQ(bytes_of(folder / "mesh.txt"), "streamed\n");
+  EXPECT_TRUE(bytes_of(folder / "image.png").starts_with("\x89PNG"));
   int files = 0;
   for (const auto& entry : fs::directory_iterator(folder)) {
     ++files;

@@ -28,8 +28,8 @@ TEST(PileMeasures, ClustersAreTheGroupsOfGrainsWhoseSpheresTouch) {
   // of 0.1 mm, four at 10 µm.
   xpbd::Model model;
   for (int g = 0; g < 3; ++g)
-    xpbd::testing::add_grain(model, xpbd::BodyKind::kRigid, xpbd::Vec3(0.0, g * (xpbd::testing::kGrainWidth + 5e-5), 0.0));
-  xpbd::testing::add_grain(model, xpbd::BodyKind::kSoft, xpbd::Vec3(0.1, 0.0, 0.0));
+    xpbd::test_support::add_grain(model, xpbd::BodyKind::kRigid, xpbd::Vec3(0.0, g * (xpbd::test_support::kGrainWidth + 5e-5), 0.0));
+  xpbd::test_support::add_grain(model, xpbd::BodyKind::kSoft, xpbd::Vec3(0.1, 0.0, 0.0));
   EXPECT_EQ(count_clusters(model, 1e-4), 2);
   EXPECT_EQ(count_clusters(model, 1e-5), 4);
 }

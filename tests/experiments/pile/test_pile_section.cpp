@@ -11,7 +11,7 @@
 namespace rice::experiments {
 namespace {
 
-using rice::testing::cube;
+using rice::test_support::cube;
 
 TEST(PileSection, ACutThroughCubesCoversTheirSquaresOnce) {
   // A 2 cm cube about the origin, and the same cube turned 45° about z and moved 3 cm along x:

@@ -17,7 +17,7 @@ namespace {
 
 using xpbd::Vec3;
 
-using rice::testing::cube;
+using rice::test_support::cube;
 
 xpbd::Collider mould_of(const grains::SurfaceMesh& mesh, bool hollow) {
   xpbd::Collider c;
