@@ -46,7 +46,10 @@ constexpr const char* method_name(Method m) {
 
 enum class Execution {
   kSerial,    ///< plain Gauss–Seidel in constraint index order
-  kParallel,  ///< Gauss–Seidel colour by colour, each colour in parallel (TBB)
+  /// Gauss–Seidel on TBB's threads: where every tet belongs to one soft body (grains), body by
+  /// body in parallel, each body's tets in index order, so the result is the serial one; else
+  /// colour by colour, each colour in parallel.
+  kParallel,
 };
 
 struct SolverSettings {
@@ -145,6 +148,12 @@ class Solver {
   void check_positions() const;
   template <class Project>
   void for_each_constraint(const Coloring& coloring, Project&& project);
+  /// The Neo-Hookean tets' sweep: by body blocks where the model has them, else by colour.
+  void project_neo_hookean_tets(double h);
+  struct TetBlock;
+  /// Each soft body's tets as one block, or nothing when some tet is not in one body's
+  /// contiguous range (a tet of free particles, two bodies' tets interleaved).
+  static std::vector<TetBlock> body_tet_blocks(const Model& model);
   [[noreturn]] void fail(const char* constraint_type, int index) const;
   StepDiagnostics measure(double h) const;
 
@@ -166,6 +175,11 @@ class Solver {
   std::vector<char> asleep_particle_, asleep_rigid_;
   SolverTimings timings_;
   Coloring coloring_distance_, coloring_volume_, coloring_neo_hookean_;
+  /// A soft body's tets, [first, last) in model.neo_hookean, and its first particle.
+  struct TetBlock {
+    int first, last, first_particle;
+  };
+  std::vector<TetBlock> tet_blocks_;  ///< body_tet_blocks
   long step_ = 0;
   int substep_ = 0;
   StepDiagnostics diagnostics_;
