@@ -139,14 +139,6 @@ TEST(ParticleContacts, ASoftGrainRestsOnAPlaneAtOneStepPerFrame) {
   EXPECT_NEAR(load, weight, 0.01 * weight);
 }
 
-}  // namespace
-}  // namespace rice::xpbd
-
-namespace rice::xpbd {
-namespace {
-
-using namespace test_support;
-
 SolverSettings vbd_settings(double time_step, int iterations) {
   return {.time_step = time_step, .substeps = 1, .iterations = iterations, .method = Method::kVbd,
           .execution = Execution::kSerial};
@@ -193,12 +185,11 @@ TEST(ParticleStepFriction, ASoftGrainSlidesAboveItsAngleWithTheDynamicAccelerati
   RecordProperty("acceleration_over_expected", std::to_string(acceleration / expected));
 }
 
-TEST(ParticleStepBonds, TwoBondedSoftGrainsPulledApartBreakAtTheirStrength) {
-  // One grain pinned, the other bonded under it (8 µm gap, no gravity) and pulled down by a
-  // force that ramps from 0 to twice the pair's strength over 2 s. The bonds break when the
-  // pull reaches the strength: the ramp is slow, so the bonds carry the whole pull. (With the
-  // bonds' springs at 1/α = 1e4 N/m, the grain rang on them, their force swung ±50% about the
-  // pull, and the pair broke at 29% of its strength.)
+/// One grain pinned, the other bonded under it (8 µm gap, no gravity) and pulled down by a
+/// force that ramps from 0 to twice the pair's strength over 2 s, stepped at `fps`: the pull
+/// over the strength at which the pair's bonds break. The ramp is slow, so the bonds carry the
+/// whole pull, and a solver that holds them right breaks them at 1.
+double breaking_pull_over_strength(const SolverSettings& settings, double fps) {
   Model model;
   model.gravity.setZero();
   model.contact.cohesion = true;
@@ -213,10 +204,10 @@ TEST(ParticleStepBonds, TwoBondedSoftGrainsPulledApartBreakAtTheirStrength) {
   double mass = 0.0;
   for (int i = pulled.first_particle; i < pulled.first_particle + pulled.particle_count; ++i)
     mass += 1.0 / model.particles.w[i];
-  const double fps = 300.0, ramp = 2.0 * strength / 2.0;  // N/s
-  Solver solver(model, vbd_settings(1.0 / fps, 10));
+  const double ramp = 2.0 * strength / 2.0;  // N/s
+  Solver solver(model, settings);
   for (int k = 0; k < 5; ++k) solver.step();  // the bonds form
-  ASSERT_GE(solver.contacts()->statistics().bonds, 3);
+  EXPECT_GE(solver.contacts()->statistics().bonds, 3);
   double pull = 0.0;
   for (int k = 0; k < 2 * fps && solver.contacts()->statistics().bonds_broken == 0; ++k) {
     pull = ramp * k / fps;
@@ -224,9 +215,27 @@ TEST(ParticleStepBonds, TwoBondedSoftGrainsPulledApartBreakAtTheirStrength) {
       model.external_forces.row(i) = Eigen::RowVector3d(0.0, 0.0, -pull / (mass * model.particles.w[i]));
     solver.step();
   }
-  ASSERT_EQ(solver.contacts()->statistics().bonds_broken, 1);
-  EXPECT_NEAR(pull, strength, 0.05 * strength);
-  RecordProperty("breaking_pull_over_strength", std::to_string(pull / strength));
+  EXPECT_EQ(solver.contacts()->statistics().bonds_broken, 1);
+  return pull / strength;
+}
+
+TEST(ParticleStepBonds, TwoBondedSoftGrainsPulledApartBreakAtTheirStrength) {
+  // (With the bonds' springs at 1/α = 1e4 N/m, the grain rang on them, their force swung ±50%
+  // about the pull, and the pair broke at 29% of its strength.)
+  const double ratio = breaking_pull_over_strength(vbd_settings(1.0 / 300.0, 10), 300.0);
+  EXPECT_NEAR(ratio, 1.0, 0.05);
+  RecordProperty("breaking_pull_over_strength", std::to_string(ratio));
+}
+
+TEST(XpbdBonds, TwoBondedSoftGrainsPulledApartBreakAtTheirStrengthAtEverySubstep) {
+  // 16, 48 and 96 substeps of 1/300 s: 160, 480 and 960 a 30 fps frame, the scenes' range.
+  for (const int substeps : {16, 48, 96}) {
+    const SolverSettings settings{.time_step = 1.0 / 300.0, .substeps = substeps, .iterations = 1,
+                                  .method = Method::kXpbd, .execution = Execution::kSerial};
+    const double ratio = breaking_pull_over_strength(settings, 300.0);
+    EXPECT_NEAR(ratio, 1.0, 0.05) << substeps << " substeps";
+    RecordProperty("breaking_pull_over_strength_" + std::to_string(substeps), std::to_string(ratio));
+  }
 }
 
 }  // namespace
