@@ -53,7 +53,8 @@ void ContactSolver::find_candidates(double time, double span) {
   const auto& bodies = model_.bodies;
   const double margin = model_.contact.margin;
   std::vector<double> pad(bodies.size());
-  for_each_body(static_cast<int>(bodies.size()), [&](int b) { update_centres(b, nullptr); });
+  for_each_body(static_cast<int>(bodies.size()), [&](int b) { update_centres(b, nullptr, true); });
+  radii_time_ = time;
   for (size_t b = 0; b < bodies.size(); ++b) pad[b] = motion_bound(static_cast<int>(b), time, span) + margin;
   centre_at_broad_phase_ = centre_now_;
   broad_phase_time_ = time;
@@ -213,7 +214,7 @@ double ContactSolver::motion_bound(int b, double time, double span) const {
   return 1.5 * speed * span + 0.5 * model_.gravity.norm() * span * span + growth;
 }
 
-void ContactSolver::update_centres(int b, const Positions* x_previous) {
+void ContactSolver::update_centres(int b, const Positions* x_previous, bool radii) {
   const Body& body = model_.bodies[b];
   if (body.asleep && centres_at_rest_[b]) return;  // a sleeping body does not move
   Box box{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
@@ -221,7 +222,7 @@ void ContactSolver::update_centres(int b, const Positions* x_previous) {
   for (int s = 0; s < body.sphere_count(); ++s) {
     const int k = sphere_offset_[b] + s;
     centre_now_[k] = sphere_centre(model_, body, s);
-    radius_[k] = sphere_radius(model_, body, s);
+    if (radii) radius_[k] = sphere_radius(model_, body, s);
     centre_start_[k] = x_previous && !body.asleep ? previous_point(model_, body, s, centre_now_[k], *x_previous)
                                                    : centre_now_[k];
     box.lower = box.lower.cwiseMin(centre_start_[k] - Vec3::Constant(radius_[k]));
@@ -268,9 +269,11 @@ void ContactSolver::begin_substep(double time, double h, const Positions& x_prev
     present_.push_back(collider_present(collider, time));
   }
   // The sphere centres of every body with candidates, now (after prediction) and at the
-  // substep's start, once.
+  // substep's start, once; their radii once a radius_interval.
+  const bool radii = time >= radii_time_ + model_.contact.radius_interval * (1.0 - 1e-9);
+  if (radii) radii_time_ = time;
   for_each_body(static_cast<int>(active_bodies_.size()),
-                [&](int k) { update_centres(active_bodies_[k], &x_previous); });
+                [&](int k) { update_centres(active_bodies_[k], &x_previous, radii); });
   // Contacts come out in key order, so the states of the last substep are merged in one pass;
   // a state whose spheres do not touch in this substep loses its anchors.
   std::vector<ContactState> previous = std::move(states_);

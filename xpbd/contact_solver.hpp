@@ -159,9 +159,9 @@ class ContactSolver {
   template <class Function>
   void for_each_body(int count, const Function& function) const;
   /// Sphere centres of body b now and at the substep's start (x_previous; null when they are
-  /// the same) and radii, with its start box and largest sphere motion. A sleeping body's
-  /// centres are computed once per sleep.
-  void update_centres(int b, const Positions* x_previous);
+  /// the same), its radii when `radii`, and its start box and largest sphere motion. A sleeping
+  /// body's centres are computed once per sleep.
+  void update_centres(int b, const Positions* x_previous, bool radii);
   /// False when no sphere pair of the body pair can touch in this substep: the boxes of their
   /// start spheres are further apart than the two bodies' motion and the margin (the sphere
   /// test in add_contacts would then skip every one of them).
@@ -194,7 +194,8 @@ class ContactSolver {
   std::vector<Vec3> centre_now_, centre_start_;  ///< sphere centres after prediction and at the substep's start
   std::vector<Vec3> centre_at_broad_phase_;  ///< sphere centres at the last broad phase
   double broad_phase_time_ = INFINITY;        ///< its time (none yet: ∞)
-  std::vector<double> radius_;  ///< sphere radii (sphere_radius), fixed over a substep
+  std::vector<double> radius_;  ///< sphere radii (sphere_radius), held for a radius_interval
+  double radii_time_ = -INFINITY;  ///< when radius_ was last updated (ContactSettings::radius_interval)
   double radius(int body, int s) const { return radius_[sphere_offset_[body] + s]; }
   std::vector<Box> start_box_;           ///< per body: the box of its spheres at the substep's start
   std::vector<double> motion_;           ///< per body: its largest sphere-centre motion in the substep

@@ -12,6 +12,7 @@
 #include "grains/mesh_types.hpp"
 #include "xpbd/body.hpp"
 #include "xpbd/collider.hpp"
+#include "xpbd/model.hpp"
 
 namespace rice::experiments {
 
@@ -61,6 +62,9 @@ struct SceneSolver {
   /// ever at 240 substeps and sleeps within 30 frames at 480; docs/known-limits.md).
   int substeps = 0;
   int iterations = 1;
+  /// Soft grains: how long their sphere radii hold between updates [s]
+  /// (xpbd::ContactSettings::radius_interval; 0: every substep).
+  double radius_interval = xpbd::ContactSettings{}.radius_interval;
   /// Soft grains' tets by vertex block descent (xpbd::Method::kVbd) instead of XPBD's
   /// projections; contacts, friction and cohesive bonds are terms of its particles' steps
   /// (xpbd/particle_contacts.hpp).

@@ -91,6 +91,9 @@ std::vector<SceneKey> solver_container_emitter_keys() {
       integer("solver", "frames", closed(1, 100000), 180.0, "frames simulated"),
       integer("solver", "substeps", closed(0, 10000), 0.0, "substeps per frame; 0: 80 for rigid grains, 160 for soft corotated ones, 480 for soft Neo-Hookean ones"),
       integer("solver", "iterations", closed(1, 1000), 1.0, "Gauss–Seidel sweeps per substep"),
+      number("solver", "radius_interval_s", closed(0, 0.1), 5e-4,
+             "soft grains: the longest time their collision spheres' radii (from each tet's smallest stretch) hold "
+             "between updates [s]; 0: every substep"),
       choice("solver", "vbd_damping", {"strain-rate", "constraint"}, std::string("strain-rate"),
              "vbd: the soak's damping time (eq. 4) as the convex strain-rate damping, or as the paper's Rayleigh "
              "damping of the constraints (XPBD always takes the paper's)"),

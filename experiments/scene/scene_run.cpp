@@ -50,6 +50,7 @@ RunInfoEntries scene_entries(const Scene& scene, const World& world) {
           {"body", rigid ? "rigid" : "soft"},
           {"frames", cell(scene.solver.frames)},
           {"fps", cell(scene.solver.fps)},
+          {"radius_interval_s", cell(scene.solver.radius_interval)},
           {"young_pa", cell(scene.grains.young)},
           {"mesh_vertices", mesh_vertex_range(world)},
           {"rayleigh_time_s", cell(world.rayleigh_time)},
