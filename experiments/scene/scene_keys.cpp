@@ -9,6 +9,7 @@
 
 #include "experiments/io/csv_table.hpp"
 #include "grains/cultivar.hpp"
+#include "xpbd/model.hpp"
 
 namespace rice::experiments {
 namespace {
@@ -91,7 +92,7 @@ std::vector<SceneKey> solver_container_emitter_keys() {
       integer("solver", "frames", closed(1, 100000), 180.0, "frames simulated"),
       integer("solver", "substeps", closed(0, 10000), 0.0, "substeps per frame; 0: 80 for rigid grains, 160 for soft corotated ones, 480 for soft Neo-Hookean ones"),
       integer("solver", "iterations", closed(1, 1000), 1.0, "Gauss–Seidel sweeps per substep"),
-      number("solver", "radius_interval_s", closed(0, 0.1), 5e-4,
+      number("solver", "radius_interval_s", closed(0, 0.1), xpbd::ContactSettings{}.radius_interval,
              "soft grains: the longest time their collision spheres' radii (from each tet's smallest stretch) hold "
              "between updates [s]; 0: every substep"),
       choice("solver", "vbd_damping", {"strain-rate", "constraint"}, std::string("strain-rate"),

@@ -590,7 +590,7 @@ std::vector<Vec2> loaded_grain(double radius_interval) {
 TEST(SphereRadius, RadiiHeldForAnIntervalFollowASuddenLoadAsThoseOfEverySubstep) {
   // Radii held for 0.5 ms (ContactSettings::radius_interval: 4 substeps of 1.45e-4 s here)
   // against radii of every substep, through the load's first millisecond and the rest after.
-  const std::vector<Vec2> every = loaded_grain(0.0), held = loaded_grain(5e-4);
+  const std::vector<Vec2> every = loaded_grain(0.0), held = loaded_grain(ContactSettings{}.radius_interval);
   ASSERT_EQ(every.size(), held.size());
   double radius_error = 0.0, centre_error = 0.0;
   for (size_t k = 0; k < every.size(); ++k) {

@@ -186,10 +186,10 @@ TEST(ParticleStepFriction, ASoftGrainSlidesAboveItsAngleWithTheDynamicAccelerati
 }
 
 /// One grain pinned, the other bonded under it (8 µm gap, no gravity) and pulled down by a
-/// force that ramps from 0 to twice the pair's strength over 2 s, stepped at `fps`: the pull
+/// force that ramps from 0 to twice the pair's strength over 2 s, a step at a time: the pull
 /// over the strength at which the pair's bonds break. The ramp is slow, so the bonds carry the
 /// whole pull, and a solver that holds them right breaks them at 1.
-double breaking_pull_over_strength(const SolverSettings& settings, double fps) {
+double breaking_pull_over_strength(const SolverSettings& settings) {
   Model model;
   model.gravity.setZero();
   model.contact.cohesion = true;
@@ -204,7 +204,7 @@ double breaking_pull_over_strength(const SolverSettings& settings, double fps) {
   double mass = 0.0;
   for (int i = pulled.first_particle; i < pulled.first_particle + pulled.particle_count; ++i)
     mass += 1.0 / model.particles.w[i];
-  const double ramp = 2.0 * strength / 2.0;  // N/s
+  const double ramp = 2.0 * strength / 2.0, fps = 1.0 / settings.time_step;  // N/s, steps a second
   Solver solver(model, settings);
   for (int k = 0; k < 5; ++k) solver.step();  // the bonds form
   EXPECT_GE(solver.contacts()->statistics().bonds, 3);
@@ -222,7 +222,7 @@ double breaking_pull_over_strength(const SolverSettings& settings, double fps) {
 TEST(ParticleStepBonds, TwoBondedSoftGrainsPulledApartBreakAtTheirStrength) {
   // (With the bonds' springs at 1/α = 1e4 N/m, the grain rang on them, their force swung ±50%
   // about the pull, and the pair broke at 29% of its strength.)
-  const double ratio = breaking_pull_over_strength(vbd_settings(1.0 / 300.0, 10), 300.0);
+  const double ratio = breaking_pull_over_strength(vbd_settings(1.0 / 300.0, 10));
   EXPECT_NEAR(ratio, 1.0, 0.05);
   RecordProperty("breaking_pull_over_strength", std::to_string(ratio));
 }
@@ -232,7 +232,7 @@ TEST(XpbdBonds, TwoBondedSoftGrainsPulledApartBreakAtTheirStrengthAtEverySubstep
   for (const int substeps : {16, 48, 96}) {
     const SolverSettings settings{.time_step = 1.0 / 300.0, .substeps = substeps, .iterations = 1,
                                   .method = Method::kXpbd, .execution = Execution::kSerial};
-    const double ratio = breaking_pull_over_strength(settings, 300.0);
+    const double ratio = breaking_pull_over_strength(settings);
     EXPECT_NEAR(ratio, 1.0, 0.05) << substeps << " substeps";
     RecordProperty("breaking_pull_over_strength_" + std::to_string(substeps), std::to_string(ratio));
   }
