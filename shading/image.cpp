@@ -13,4 +13,10 @@ double rms_difference(const Image& a, const Image& b) {
   return a.pixels.empty() ? 0.0 : std::sqrt(sum / (3.0 * a.pixels.size()));
 }
 
+double mean_radiance(const Image& image) {
+  double sum = 0.0;
+  for (const Eigen::Array3f& p : image.pixels) sum += p.cast<double>().mean();
+  return image.pixels.empty() ? 0.0 : sum / static_cast<double>(image.pixels.size());
+}
+
 }  // namespace rice::shading

@@ -22,4 +22,7 @@ struct Image {
 /// the sizes differ.
 double rms_difference(const Image& a, const Image& b);
 
+/// Mean over pixels and channels (0 for an empty image).
+double mean_radiance(const Image& image);
+
 }  // namespace rice::shading

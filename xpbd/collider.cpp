@@ -44,9 +44,10 @@ ColliderKeyframe collider_pose(const Collider& collider, double time) {
   // Held between two equal poses: exactly that pose, so that the collider is at rest there
   // ((1 − s) a + s a differs from a in the last bit, and a collider in motion wakes what it
   // reaches).
-  if (same_pose(a, b)) return {time, a.translation, a.rotation};
+  if (same_pose(a, b)) return {time, a.translation, a.rotation, a.scale};
   const double s = (time - a.time) / (b.time - a.time);
-  return {time, (1.0 - s) * a.translation + s * b.translation, a.rotation.slerp(s, b.rotation)};
+  const double scale = a.scale == b.scale ? a.scale : (1.0 - s) * a.scale + s * b.scale;  // (exactly 1 when unscaled)
+  return {time, (1.0 - s) * a.translation + s * b.translation, a.rotation.slerp(s, b.rotation), scale};
 }
 
 SignedDistance local_signed_distance(const Collider& collider, const Vec3& p) {
@@ -94,9 +95,9 @@ void validate(const Collider& c, int index) {
   for (size_t k = 0; k < c.motion.size(); ++k) {
     const ColliderKeyframe& key = c.motion[k];
     if (!std::isfinite(key.time) || !key.translation.allFinite() || !key.rotation.coeffs().allFinite() ||
-        std::abs(key.rotation.norm() - 1.0) > 1e-9)
+        std::abs(key.rotation.norm() - 1.0) > 1e-9 || !(std::isfinite(key.scale) && key.scale > 0.0))
       throw std::invalid_argument(name + ": keyframe " + std::to_string(k) +
-                                  " needs a finite time and translation and a unit rotation");
+                                  " needs a finite time and translation, a unit rotation and a positive scale");
     if (k > 0 && !(key.time > c.motion[k - 1].time))
       throw std::invalid_argument(name + ": keyframe times must increase (keyframe " + std::to_string(k) + ")");
   }

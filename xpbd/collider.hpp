@@ -23,11 +23,13 @@ enum class ColliderShape {
   kDistanceGrid,  ///< the sampled field `grid` (a bowl, a plate, a mould, a hand)
 };
 
-/// A pose of the collider's frame at a time: world = translation + rotation · local.
+/// A pose of the collider's frame at a time: world = translation + rotation · (scale · local).
+/// A scale that changes over the keyframes is a mould that closes on what it holds.
 struct ColliderKeyframe {
   double time = 0.0;  ///< [s]
   Vec3 translation = Vec3::Zero();
   Quat rotation = Quat::Identity();
+  double scale = 1.0;  ///< uniform, about the collider frame's origin
 };
 
 struct Collider {
@@ -36,7 +38,7 @@ struct Collider {
   double radius = 0.0;               ///< sphere, capsule [m]
   double half_length = 0.0;          ///< capsule [m]
   std::shared_ptr<const DistanceGrid> grid;  ///< kDistanceGrid (shared: grids are large)
-  /// Poses at increasing times, interpolated linearly (translation) and by slerp (rotation),
+  /// Poses at increasing times, interpolated linearly (translation, scale) and by slerp (rotation),
   /// held constant before the first and after the last. One keyframe: a static collider.
   std::vector<ColliderKeyframe> motion{ColliderKeyframe{}};
   double static_friction = 0.0;   ///< μ_s against grains
@@ -51,7 +53,14 @@ inline bool collider_present(const Collider& collider, double time) { return tim
 
 /// Whether two poses are the same to the bit (a collider between them is at rest).
 inline bool same_pose(const ColliderKeyframe& a, const ColliderKeyframe& b) {
-  return a.translation == b.translation && a.rotation.coeffs() == b.rotation.coeffs();
+  return a.translation == b.translation && a.rotation.coeffs() == b.rotation.coeffs() && a.scale == b.scale;
+}
+
+inline Vec3 to_world(const ColliderKeyframe& pose, const Vec3& local) {
+  return pose.translation + pose.rotation * (pose.scale * local);
+}
+inline Vec3 to_local(const ColliderKeyframe& pose, const Vec3& world) {
+  return pose.rotation.conjugate() * (world - pose.translation) / pose.scale;
 }
 
 /// The collider's pose at time t.
@@ -63,11 +72,22 @@ struct SignedDistance {
   Vec3 normal;
 };
 
-/// φ of the collider's shape at a point given in the collider's frame.
+/// φ of the collider's shape at a point given in the collider's frame, in that frame's units.
 SignedDistance local_signed_distance(const Collider& collider, const Vec3& local_point);
 
+/// φ in world units (the pose's scale times the local φ) at a point given in the collider's
+/// frame; the normal stays in that frame. The surface point under `local` is
+/// local − (φ / scale) n.
+inline SignedDistance posed_signed_distance(const Collider& collider, const ColliderKeyframe& pose,
+                                            const Vec3& local) {
+  SignedDistance d = local_signed_distance(collider, local);
+  d.distance *= pose.scale;
+  return d;
+}
+
 /// Throws std::invalid_argument naming the collider for sizes that are not positive and
-/// finite, friction coefficients below zero or μ_k > μ_s, or keyframe times not increasing.
+/// finite, friction coefficients below zero or μ_k > μ_s, keyframe times not increasing or
+/// keyframe scales that are not positive and finite.
 void validate(const Collider& collider, int index);
 
 }  // namespace rice::xpbd

@@ -12,14 +12,6 @@
 #include "xpbd/sleeping.hpp"
 
 namespace rice::xpbd {
-namespace {
-
-Vec3 to_world(const ColliderKeyframe& pose, const Vec3& local) { return pose.translation + pose.rotation * local; }
-Vec3 to_local(const ColliderKeyframe& pose, const Vec3& world) {
-  return pose.rotation.conjugate() * (world - pose.translation);
-}
-
-}  // namespace
 
 ContactSolver::ContactSolver(Model& model, bool parallel) : model_(model), parallel_(parallel) {
   const ContactSettings& s = model.contact;
@@ -150,7 +142,7 @@ void ContactSolver::add_collider_candidates(double time, double span, std::vecto
         const Vec3& centre = centre_now_[sphere_offset_[b] + s];
         const Vec3 local = to_local(start, centre);
         const double moved = (to_world(end, local) - centre).norm();
-        if (local_signed_distance(collider, local).distance - radius(static_cast<int>(b), s) < pad[b] + moved) {
+        if (posed_signed_distance(collider, start, local).distance - radius(static_cast<int>(b), s) < pad[b] + moved) {
           sphere_pairs_.push_back({s, 0});
           pushed = std::max(pushed, moved);
         }
@@ -253,7 +245,8 @@ bool ContactSolver::may_touch(const BodyPair& pair) const {
   const double lipschitz = collider.shape == ColliderShape::kDistanceGrid ? std::sqrt(3.0) : 1.0;
   const Vec3 centre = 0.5 * (box_a.lower + box_a.upper);
   const double half_diagonal = 0.5 * (box_a.upper - box_a.lower).norm();
-  return local_signed_distance(collider, to_local(pose_start_[k], centre)).distance - lipschitz * half_diagonal <
+  return posed_signed_distance(collider, pose_start_[k], to_local(pose_start_[k], centre)).distance -
+             lipschitz * half_diagonal <
          motion_[pair.a] + margin;
 }
 
@@ -377,11 +370,12 @@ void ContactSolver::add_contacts(const BodyPair& pair, StateOf& state_of, std::v
     for (int i = pair.first; i < pair.last; ++i) {
       const int sa = sphere_pairs_[i][0];
       const Vec3 local = to_local(pose_start_[k], start(pair.a, sa));
-      const SignedDistance sd = local_signed_distance(collider, local);
+      const SignedDistance sd = posed_signed_distance(collider, pose_start_[k], local);
       const double moved =
           (now(pair.a, sa) - start(pair.a, sa)).norm() + (to_world(pose_end_[k], local) - start(pair.a, sa)).norm();
       if (sd.distance - radius(pair.a, sa) >= moved + margin) continue;
-      contacts_.push_back({state_of({pair.a, pair.b, sa, 0}), sd.normal, local - sd.distance * sd.normal});
+      contacts_.push_back({state_of({pair.a, pair.b, sa, 0}), sd.normal,
+                           local - (sd.distance / pose_start_[k].scale) * sd.normal});
     }
     return;
   }

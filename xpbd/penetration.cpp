@@ -41,9 +41,8 @@ Penetration deepest_penetration(const Model& model, double time) {
     const ColliderKeyframe pose = collider_pose(collider, time);
     for (const PlacedSpheres& p : placed)
       for (size_t i = 0; i < p.centres.size(); ++i) {
-        const Vec3 local = pose.rotation.conjugate() * (p.centres[i] - pose.translation);
-        deepest.into_colliders =
-            std::max(deepest.into_colliders, p.radii[i] - local_signed_distance(collider, local).distance);
+        const double phi = posed_signed_distance(collider, pose, to_local(pose, p.centres[i])).distance;
+        deepest.into_colliders = std::max(deepest.into_colliders, p.radii[i] - phi);
       }
   }
   return deepest;

@@ -28,6 +28,10 @@ class RenderCommands : public CommandFamily {
     c->add_flag("--every-frame", render_.every_frame, "every frame of the run into frame_NNNN.png, framed as the last");
     c->add_flag("--deformed-curvature", deformed_curvature_,
                 "soft grains shaded with the curvature of their deformed meshes (default: their rest curvature)");
+    c->add_option("--soft-instance-tolerance", render_.soft.instance_tolerance,
+                  "[m] a soft grain this close to its best rigid fit is drawn as an instance of its variant (0: every "
+                  "soft grain its own deformed mesh)")
+        ->check(number_in(0, 1))->capture_default_str();
     c->add_option("--out", out_, "output folder")->capture_default_str();
     c->add_option("--absorption", render_.absorption_percent, "water absorption W [%]: sigma0 and albedo")
         ->check(number_in(0, 100))->capture_default_str();
@@ -84,7 +88,7 @@ class RenderCommands : public CommandFamily {
     s.render.ambient_occlusion = !no_ao_;
     s.ground = !no_ground_;
     s.side_by_side = side_by_side_;
-    s.soft_curvature = deformed_curvature_ ? SoftCurvature::kDeformed : SoftCurvature::kRest;
+    s.soft.curvature = deformed_curvature_ ? SoftCurvature::kDeformed : SoftCurvature::kRest;
     s.sky_image = sky_image_;
     for (size_t k = 0; k + 10 <= area_.size(); k += 10) {
       const auto& a = area_;

@@ -13,6 +13,7 @@
 #include "experiments/studies/render_study.hpp"
 #include "experiments/studies/scene_convergence_study.hpp"
 #include "experiments/studies/soft_curvature_study.hpp"
+#include "experiments/studies/soft_instance_study.hpp"
 #include "experiments/studies/tet_quality_study.hpp"
 #include "experiments/studies/xpbd_stiffness_study.hpp"
 
@@ -27,6 +28,7 @@ class StudyCommands : public CommandFamily {
     add_cdrf(study);
     add_render(study);
     add_soft_curvature(study);
+    add_soft_instances(study);
     add_pour_substeps(study);
     add_grain_substeps(study);
     add_tet_quality(study);
@@ -87,6 +89,22 @@ class StudyCommands : public CommandFamily {
     c->add_option("--spp", s.samples_per_pixel, "samples per pixel")->check(number_in(1, 65536))->capture_default_str();
     add(c, [this] { experiments::validate(soft_curvature_); },
         [this] { soft_curvature_study_command(soft_curvature_, soft_curvature_out_); });
+  }
+
+  void add_soft_instances(CLI::App* study) {
+    CLI::App* c = study->add_subcommand(
+        "soft-instances", "a soft run's frame: near-rigid grains drawn as instances, image error and time per tolerance");
+    SoftInstanceStudySettings& s = soft_instances_;
+    c->add_option("--run", s.run, "a soft scene run's output folder (rice run)")->required();
+    c->add_option("--frame", s.frame, "the run's frame (0: the last)")->check(number_in(0, 1e6))->capture_default_str();
+    c->add_option("--out", soft_instances_out_, "output folder")->capture_default_str();
+    c->add_option("--width", s.width, "pixels")->check(number_in(8, 4096))->capture_default_str();
+    c->add_option("--height", s.height, "pixels")->check(number_in(8, 4096))->capture_default_str();
+    c->add_option("--spp", s.samples_per_pixel, "samples per pixel")->check(number_in(1, 65536))->capture_default_str();
+    c->add_option("--tolerances", s.tolerances, "[m] fit tolerances to sweep (0, every grain its own mesh, always)")
+        ->check(number_in(0, 1))->capture_default_str();
+    add(c, [this] { experiments::validate(soft_instances_); },
+        [this] { soft_instance_study_command(soft_instances_, soft_instances_out_); });
   }
 
   void add_pour_substeps(CLI::App* study) {
@@ -265,6 +283,8 @@ class StudyCommands : public CommandFamily {
   bool scene_convergence_quick_ = false;
   SoftCurvatureStudySettings soft_curvature_;
   std::string soft_curvature_out_ = "out/soft-curvature";
+  SoftInstanceStudySettings soft_instances_;
+  std::string soft_instances_out_ = "out/soft-instances";
   PourSubstepStudySettings pour_substeps_;
   std::string pour_substeps_out_ = "out/pour-substeps", pour_substeps_body_ = "rigid";
   bool pour_substeps_no_cohesion_ = false;

@@ -131,6 +131,7 @@ struct RenderInputs {
 struct RenderTotals {
   shading::RenderStats stats;
   int instances = 0, prototypes = 0;
+  int own_meshes = 0;  ///< soft grains drawn as their own deformed mesh (the last image's)
 };
 
 /// Image k: its scene, the camera (framed on this image when none is set yet), the render,
@@ -140,7 +141,7 @@ void render_image(const RenderCommandSettings& s, const RenderInputs& in, int k,
   shading::RenderScene scene;
   std::vector<Eigen::AlignedBox3d> grain_boxes;
   if (!s.run.empty()) {
-    add_run_grains(scene, s.run, in.variants, in.frames[k], grain_boxes, s.soft_curvature);
+    totals.own_meshes = add_run_grains(scene, s.run, in.variants, in.frames[k], grain_boxes, s.soft);
   } else {
     add_mesh_files(scene, in.files, s.side_by_side, grain_boxes);
   }
@@ -183,6 +184,8 @@ void write_render_info(const RenderCommandSettings& s, const RenderInputs& in, i
                                   {"images", cell(images)},
                                   {"instances", cell(totals.instances)},
                                   {"prototypes", cell(totals.prototypes)},
+                                  {"soft_instance_tolerance_m", cell(s.soft.instance_tolerance)},
+                                  {"soft_grains_own_mesh", cell(totals.own_meshes)},
                                   {"absorption_percent", cell(s.absorption_percent)},
                                   {"sigma0_m", cell(in.materials[0].sigma0)},
                                   {"width", cell(s.render.width)},

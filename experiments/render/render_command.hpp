@@ -40,8 +40,7 @@ struct RenderCommandSettings {
   /// A run's every frame, into frame_NNNN.png and .exr, with one camera: the given one or the
   /// last frame's framing. The variants' curvature and the CDRF table are made once.
   bool every_frame = false;
-  /// What a soft run's deformed grains are shaded with (docs/rendering.md measures both).
-  SoftCurvature soft_curvature = SoftCurvature::kRest;
+  SoftGrainDrawing soft;  ///< how a soft run's grains are drawn
 };
 
 /// Throws std::invalid_argument naming the setting that is out of range or the file missing.

@@ -7,6 +7,7 @@
 
 #include "experiments/io/numeric_csv.hpp"
 #include "experiments/io/progress.hpp"
+#include "experiments/render/rigid_fit.hpp"
 #include "grains/embedding.hpp"
 #include "grains/mesh_io.hpp"
 #include "shading/curvature.hpp"
@@ -77,15 +78,31 @@ Eigen::AlignedBox3d placed_box(const grains::Vertices& V, const Eigen::Affine3d&
   return box;
 }
 
+/// Each variant's prototype, added the first time a grain needs it.
+class VariantPrototypes {
+ public:
+  VariantPrototypes(shading::RenderScene& scene, const RunVariants& variants)
+      : scene_(scene), variants_(variants), index_(variants.meshes.size(), -1) {}
+  int operator[](int variant) {
+    if (index_[variant] < 0)
+      index_[variant] = scene_.add_prototype(variants_.meshes[variant].V, variants_.meshes[variant].F,
+                                             variants_.curvature[variant]);
+    return index_[variant];
+  }
+
+ private:
+  shading::RenderScene& scene_;
+  const RunVariants& variants_;
+  std::vector<int> index_;
+};
+
 /// One row per grain: pose (c, q), the render mesh at c + q (drop + P R p − c₀).
 void add_rigid_grains(shading::RenderScene& scene, const NumericCsv& grains_csv, const NumericCsv& frame,
                       const RunVariants& variants, std::vector<Eigen::AlignedBox3d>& boxes) {
   if (frame.rows.size() != grains_csv.rows.size())
     throw std::runtime_error("render: " + frame.path.string() + " has " + std::to_string(frame.rows.size()) +
                              " grains, grains.csv " + std::to_string(grains_csv.rows.size()));
-  std::vector<int> prototype;
-  for (size_t k = 0; k < variants.meshes.size(); ++k)
-    prototype.push_back(scene.add_prototype(variants.meshes[k].V, variants.meshes[k].F, variants.curvature[k]));
+  VariantPrototypes prototype(scene, variants);
   for (size_t g = 0; g < grains_csv.rows.size(); ++g) {
     const auto& a = grains_csv.rows[g];
     const auto& b = frame.rows[g];
@@ -123,17 +140,31 @@ grains::Vertices simulation_vertices(const NumericCsv& frame, size_t g, Eigen::I
   return V;
 }
 
-/// Each soft grain its own mesh, shaded with `curvature`.
-void add_soft_grains(shading::RenderScene& scene, const NumericCsv& grains_csv, const NumericCsv& frame,
-                     const RunVariants& variants, SoftCurvature curvature,
-                     std::vector<Eigen::AlignedBox3d>& boxes) {
+/// Each soft grain as `soft` says: an instance of its variant at its rigid fit when that is
+/// close enough, else its own mesh. Returns how many were their own mesh.
+int add_soft_grains(shading::RenderScene& scene, const NumericCsv& grains_csv, const NumericCsv& frame,
+                    const RunVariants& variants, const SoftGrainDrawing& soft,
+                    std::vector<Eigen::AlignedBox3d>& boxes) {
+  VariantPrototypes prototype(scene, variants);
+  int own = 0;
   for (const SoftGrain& grain : soft_run_grains(grains_csv, frame, variants)) {
-    const Eigen::VectorXd H = curvature == SoftCurvature::kRest
+    if (soft.instance_tolerance > 0.0) {
+      const RigidFit fit = fit_rigid_motion(variants.simulation[grain.variant].V, grain.swell, grain.x);
+      if (fit.residual <= soft.instance_tolerance) {
+        scene.add_instance(prototype[grain.variant], fit.place, 0);
+        boxes.push_back(placed_box(variants.meshes[grain.variant].V, fit.place));
+        continue;
+      }
+    }
+    const grains::SurfaceMesh mesh = deformed_render_mesh(grain, variants);
+    const Eigen::VectorXd H = soft.curvature == SoftCurvature::kRest
                                   ? Eigen::VectorXd(variants.curvature[grain.variant] / grain.swell)
-                                  : shading::vertex_mean_curvature(grain.mesh.V, grain.mesh.F);
-    scene.add_instance(scene.add_prototype(grain.mesh.V, grain.mesh.F, H), Eigen::Affine3d::Identity(), 0);
-    boxes.push_back(placed_box(grain.mesh.V, Eigen::Affine3d::Identity()));
+                                  : shading::vertex_mean_curvature(mesh.V, mesh.F);
+    scene.add_instance(scene.add_prototype(mesh.V, mesh.F, H), Eigen::Affine3d::Identity(), 0);
+    boxes.push_back(placed_box(mesh.V, Eigen::Affine3d::Identity()));
+    ++own;
   }
+  return own;
 }
 
 }  // namespace
@@ -153,8 +184,7 @@ std::vector<SoftGrain> soft_run_grains(const NumericCsv& grains_csv, const Numer
     grains.push_back({.grain = static_cast<int>(g),
                       .variant = variant,
                       .swell = value(grains_csv, grains_csv.rows[g], "swell"),
-                      .mesh = {grains::apply_embedding(variants.embedding[variant], x, simulation.T),
-                               variants.meshes[variant].F}});
+                      .x = x});
   }
   if (row != frame.rows.size())
     throw std::runtime_error("render: " + frame.path.string() + " has " + std::to_string(frame.rows.size() - row) +
@@ -162,17 +192,20 @@ std::vector<SoftGrain> soft_run_grains(const NumericCsv& grains_csv, const Numer
   return grains;
 }
 
-void add_run_grains(shading::RenderScene& scene, const std::filesystem::path& run, const RunVariants& variants,
-                    const std::filesystem::path& frame, std::vector<Eigen::AlignedBox3d>& boxes,
-                    SoftCurvature curvature) {
+grains::SurfaceMesh deformed_render_mesh(const SoftGrain& grain, const RunVariants& variants) {
+  return {grains::apply_embedding(variants.embedding[grain.variant], grain.x, variants.simulation[grain.variant].T),
+          variants.meshes[grain.variant].F};
+}
+
+int add_run_grains(shading::RenderScene& scene, const std::filesystem::path& run, const RunVariants& variants,
+                   const std::filesystem::path& frame, std::vector<Eigen::AlignedBox3d>& boxes,
+                   const SoftGrainDrawing& soft) {
   const NumericCsv grains_csv = read_numeric_csv(run / "grains.csv");
   const NumericCsv poses = read_numeric_csv(frame);
-  const bool soft = std::find(poses.columns.begin(), poses.columns.end(), "vertex") != poses.columns.end();
-  if (soft) {
-    add_soft_grains(scene, grains_csv, poses, variants, curvature, boxes);
-  } else {
-    add_rigid_grains(scene, grains_csv, poses, variants, boxes);
-  }
+  if (std::find(poses.columns.begin(), poses.columns.end(), "vertex") != poses.columns.end())
+    return add_soft_grains(scene, grains_csv, poses, variants, soft, boxes);
+  add_rigid_grains(scene, grains_csv, poses, variants, boxes);
+  return 0;
 }
 
 }  // namespace rice::experiments

@@ -2,7 +2,9 @@
 // its variants' render meshes with their vertex curvature, its frames' poses, and each frame's
 // grains. A rigid grain is an instance of its variant at c + q (drop + P R p − c₀)
 // (grains.csv). A soft grain's frame rows are its simulation vertices, deformed; its render
-// mesh rides on them through its variant's embedding (paper §4.3), each vertex at Σ_k w_k x_k.
+// mesh rides on them through its variant's embedding (paper §4.3), each vertex at Σ_k w_k x_k,
+// unless the grain is within SoftGrainDrawing::instance_tolerance of rigid: then it is an
+// instance of its variant at its best rigid fit (rigid_fit.hpp), as a rigid grain is.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -29,6 +31,16 @@ enum class SoftCurvature {
   kDeformed,  ///< recomputed on the deformed mesh of every grain in every frame
 };
 
+/// How a soft run's grains are drawn (docs/rendering.md measures both knobs).
+struct SoftGrainDrawing {
+  SoftCurvature curvature = SoftCurvature::kRest;  ///< of the grains drawn as their own mesh
+  /// [m] A grain whose simulation vertices all lie this close to its best rigid fit is an
+  /// instance of its variant there; 0: every grain its own deformed mesh. The default is a
+  /// tenth of a pixel of a 4K frame of a 10 cm scene, where `rice study soft-instances`
+  /// finds the image unchanged (docs/rendering.md).
+  double instance_tolerance = 5e-6;
+};
+
 /// The run's variants and their vertex curvature, computed once for every frame rendered; for
 /// a soft run also their simulation meshes and the render meshes' embeddings in them.
 struct RunVariants {
@@ -40,11 +52,11 @@ struct RunVariants {
 
 RunVariants read_run_variants(const std::filesystem::path& run);
 
-/// A soft grain at a frame: its render mesh through its variant's embedding.
+/// A soft grain at a frame.
 struct SoftGrain {
   int grain = 0, variant = 0;
   double swell = 1.0;  ///< P (grains.csv)
-  grains::SurfaceMesh mesh;
+  grains::Vertices x;  ///< its simulation vertices
 };
 
 /// The soft grains in the scene at `frame` (a soft run's, whose rows are grain, vertex,
@@ -53,12 +65,16 @@ struct SoftGrain {
 std::vector<SoftGrain> soft_run_grains(const NumericCsv& grains_csv, const NumericCsv& frame,
                                        const RunVariants& variants);
 
+/// Its render mesh, carried by its simulation vertices through its variant's embedding.
+grains::SurfaceMesh deformed_render_mesh(const SoftGrain& grain, const RunVariants& variants);
+
 /// Adds the grains in the scene at `frame` (those still parked are left out), with material 0,
-/// and appends each one's box to `boxes`: a rigid run's as instances of the variants, a soft run's each as its
-/// own deformed mesh. Throws std::runtime_error naming the file for a frame that does not
-/// match grains.csv or the variants.
-void add_run_grains(shading::RenderScene& scene, const std::filesystem::path& run, const RunVariants& variants,
-                    const std::filesystem::path& frame, std::vector<Eigen::AlignedBox3d>& boxes,
-                    SoftCurvature curvature = SoftCurvature::kRest);
+/// and appends each one's box to `boxes`: a rigid run's as instances of the variants, a soft
+/// run's as `soft` says. Returns how many soft grains were drawn as their own mesh. Throws
+/// std::runtime_error naming the file for a frame that does not match grains.csv or the
+/// variants.
+int add_run_grains(shading::RenderScene& scene, const std::filesystem::path& run, const RunVariants& variants,
+                   const std::filesystem::path& frame, std::vector<Eigen::AlignedBox3d>& boxes,
+                   const SoftGrainDrawing& soft = {});
 
 }  // namespace rice::experiments

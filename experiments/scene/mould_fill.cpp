@@ -15,7 +15,7 @@ std::vector<Vec3> mould_lattice(const xpbd::Collider& mould, const Vec3& cell) {
   if (!(cell.minCoeff() > 0.0) || !cell.allFinite()) throw std::invalid_argument("fill: the cell must be positive");
   const xpbd::ColliderKeyframe pose = xpbd::collider_pose(mould, 0.0);
   const auto room = [&](const Vec3& world) {
-    return xpbd::local_signed_distance(mould, pose.rotation.conjugate() * (world - pose.translation)).distance;
+    return xpbd::posed_signed_distance(mould, pose, xpbd::to_local(pose, world)).distance;
   };
   // The grid's box in the world.
   const xpbd::DistanceGrid& grid = *mould.grid;
@@ -23,7 +23,7 @@ std::vector<Vec3> mould_lattice(const xpbd::Collider& mould, const Vec3& cell) {
   Vec3 lower = Vec3::Constant(INFINITY), upper = Vec3::Constant(-INFINITY);
   for (int corner = 0; corner < 8; ++corner) {
     const Vec3 local = grid.origin + Vec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1).cwiseProduct(extent);
-    const Vec3 world = pose.translation + pose.rotation * local;
+    const Vec3 world = xpbd::to_world(pose, local);
     lower = lower.cwiseMin(world);
     upper = upper.cwiseMax(world);
   }

@@ -151,6 +151,7 @@ std::vector<xpbd::ColliderKeyframe> read_keyframes(TomlSection& section, const t
       key.require(time > motion.back().time, "time_s",
                   "a time in s after the previous keyframe's (" + cell(motion.back().time) + " s)");
     motion.push_back(read_pose(key, time));
+    motion.back().scale = key.number("size");
     key.finish();
   }
   return motion;

@@ -181,6 +181,8 @@ std::vector<SceneKey> collider_keys() {
   keys.push_back(number("keyframes", "time_s", closed(0, 1e4), {}, "the keyframe's time [s], after the previous one's",
                         "0 for the first; required after"));
   for (SceneKey& key : pose_keys("keyframes")) keys.push_back(std::move(key));
+  keys.push_back(number("keyframes", "size", open_low(0, 10), 1.0,
+                        "the collider's size then, times its own, about its frame's origin: a mould that closes"));
   return keys;
 }
 

@@ -32,7 +32,7 @@ double lowest_point(const MeshCollider& mould, double time) {
   const xpbd::ColliderKeyframe pose = xpbd::collider_pose(mould.collider, time);
   double lowest = INFINITY;
   for (int v = 0; v < mould.mesh.V.rows(); ++v)
-    lowest = std::min(lowest, (pose.translation + pose.rotation * mould.mesh.V.row(v).transpose()).z());
+    lowest = std::min(lowest, xpbd::to_world(pose, mould.mesh.V.row(v).transpose()).z());
   return lowest;
 }
 

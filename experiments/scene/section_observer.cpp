@@ -13,7 +13,7 @@ namespace {
 /// φ of the collider's room at p, in room_pose (> 0 inside the room).
 double room_at(const xpbd::Collider& room, const xpbd::Vec3& p) {
   const xpbd::ColliderKeyframe pose = room_pose(room);
-  return xpbd::local_signed_distance(room, pose.rotation.conjugate() * (p - pose.translation)).distance;
+  return xpbd::posed_signed_distance(room, pose, xpbd::to_local(pose, p)).distance;
 }
 
 }  // namespace

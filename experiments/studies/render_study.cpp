@@ -211,8 +211,7 @@ void render_study_command(const RenderStudySettings& settings, const std::filesy
   write_png(folder / "reference_cdrf.png", tone_map(reference, 0.0));
   write_exr(folder / "reference_cdrf.exr", reference);
   CsvTable table({"method", "knob", "seconds", "rmse", "relative_rmse"});
-  double mean = 0.0;
-  for (const auto& p : reference.pixels) mean += p.mean() / reference.pixels.size();
+  const double mean = shading::mean_radiance(reference);
   const std::vector<std::vector<double>> errors =
       sweep_samplers(run, materials, reference, mean,
                      {{"independent", shading::SamplerKind::kIndependent},

@@ -34,11 +34,12 @@ CsvTable compare_curvature(const SoftCurvatureStudySettings& s, const RunVariant
   Progress progress("soft-curvature: grains", static_cast<int>(grains.size()));
   for (const SoftGrain& grain : grains) {
     const auto start = std::chrono::steady_clock::now();
-    const Eigen::VectorXd deformed = shading::vertex_mean_curvature(grain.mesh.V, grain.mesh.F);
+    const grains::SurfaceMesh mesh = deformed_render_mesh(grain, variants);
+    const Eigen::VectorXd deformed = shading::vertex_mean_curvature(mesh.V, mesh.F);
     const double seconds = seconds_since(start);
     const Eigen::VectorXd rest = variants.curvature[grain.variant] / grain.swell;
     const double relative = rms(deformed - rest) / rms(deformed);
-    table.add_row({cell(grain.grain), cell(grain.variant), cell(static_cast<long>(grain.mesh.V.rows())), cell(relative),
+    table.add_row({cell(grain.grain), cell(grain.variant), cell(static_cast<long>(mesh.V.rows())), cell(relative),
                    cell(seconds)});
     totals.relative_rms_sum += relative;
     totals.worst = std::max(totals.worst, relative);
@@ -58,16 +59,10 @@ double render_with(const SoftCurvatureStudySettings& s, SoftCurvature curvature,
   r.render.width = s.width;
   r.render.height = s.height;
   r.render.samples_per_pixel = s.samples_per_pixel;
-  r.soft_curvature = curvature;
+  r.soft = {.curvature = curvature, .instance_tolerance = 0.0};  // every grain its own mesh
   const auto start = std::chrono::steady_clock::now();
   render_command(r, folder);
   return seconds_since(start);
-}
-
-double mean_radiance(const shading::Image& image) {
-  double sum = 0.0;
-  for (const Eigen::Array3f& p : image.pixels) sum += p.cast<double>().mean();
-  return sum / static_cast<double>(image.pixels.size());
 }
 
 }  // namespace
@@ -90,7 +85,7 @@ void soft_curvature_study_command(const SoftCurvatureStudySettings& s, const std
   const double deformed_s = render_with(s, SoftCurvature::kDeformed, folder / "deformed");
   const shading::Image rest = read_exr(folder / "rest" / "render.exr");
   const shading::Image deformed = read_exr(folder / "deformed" / "render.exr");
-  const double image_error = shading::rms_difference(rest, deformed) / mean_radiance(deformed);
+  const double image_error = shading::rms_difference(rest, deformed) / shading::mean_radiance(deformed);
   const double mean_relative = totals.relative_rms_sum / totals.grains;
   write_file_atomically(folder / "run_info.txt",
                         run_info({{"command", "study soft-curvature"},

@@ -241,18 +241,69 @@ TEST_P(GrainContact, WakesAndFallsWhenItsColliderIsRemoved) {
 
 TEST(Colliders, KeyframesInterpolateAndBadCollidersAreRefused) {
   Collider moving;
-  moving.motion = {{0.0, Vec3::Zero(), Quat::Identity()}, {2.0, Vec3(0.0, 0.0, 1.0), Quat::Identity()}};
+  moving.motion = {{0.0, Vec3::Zero(), Quat::Identity()}, {2.0, Vec3(0.0, 0.0, 1.0), Quat::Identity(), 3.0}};
   EXPECT_NEAR(collider_pose(moving, 0.5).translation.z(), 0.25, 1e-15);
+  EXPECT_NEAR(collider_pose(moving, 0.5).scale, 1.5, 1e-15);
   EXPECT_NEAR(collider_pose(moving, 5.0).translation.z(), 1.0, 1e-15);
   Collider bad = moving;
   bad.motion[1].time = 0.0;
   EXPECT_THROW(validate(bad, 3), std::invalid_argument);
+  for (const double scale : {0.0, -1.0, double(INFINITY)}) {
+    bad = moving;
+    bad.motion[1].scale = scale;
+    EXPECT_THROW(validate(bad, 3), std::invalid_argument) << scale;
+  }
   bad = moving;
   bad.static_friction = 0.2, bad.dynamic_friction = 0.3;
   EXPECT_THROW(validate(bad, 3), std::invalid_argument);
   bad = moving;
   bad.shape = ColliderShape::kSphere, bad.radius = -1.0;
   EXPECT_THROW(validate(bad, 3), std::invalid_argument);
+}
+
+TEST(Colliders, AScaledPoseScalesTheSignedDistanceAboutTheFramesOrigin) {
+  // A unit box scaled by 2 about its centre at (1, 0, 0), turned a quarter about z: the world
+  // distance of a point is that to a box of half extents 2, whichever way it is read.
+  Collider box;
+  box.shape = ColliderShape::kBox;
+  box.half_extents = Vec3::Ones();
+  const ColliderKeyframe pose{0.0, Vec3(1.0, 0.0, 0.0), Quat(Eigen::AngleAxisd(0.5 * M_PI, Vec3::UnitZ())), 2.0};
+  for (const Vec3& world : {Vec3(1.0, 0.0, 3.5), Vec3(4.0, 0.5, 0.0), Vec3(1.5, 0.0, 0.0)}) {
+    const Vec3 local = to_local(pose, world);
+    EXPECT_LT((to_world(pose, local) - world).norm(), 1e-15);
+    const SignedDistance d = posed_signed_distance(box, pose, local);
+    const Vec3 q = (world - pose.translation).cwiseAbs() - Vec3::Constant(2.0);
+    const double expected = (q.array() > 0.0).any() ? q.cwiseMax(0.0).norm() : q.maxCoeff();
+    EXPECT_NEAR(d.distance, expected, 1e-14) << world.transpose();
+    // The surface point under it, local − (φ / scale) n, is on the scaled box.
+    const Vec3 surface = to_world(pose, local - (d.distance / pose.scale) * d.normal);
+    EXPECT_NEAR(posed_signed_distance(box, pose, to_local(pose, surface)).distance, 0.0, 1e-14);
+  }
+}
+
+TEST_P(GrainContact, RidesUpOnAGrowingBox) {
+  // A slab of half thickness d under the grain grows to 1.5 times its size about its centre in
+  // 1 s: its top, and the grain resting on it, rise by d / 2 at 5 mm/s, the grain never deeper
+  // in it than 1% of its thickness.
+  const double d = 0.01;
+  Model model;
+  const int grain = add_grain(model, GetParam(), Vec3::Zero());
+  Collider slab;
+  slab.shape = ColliderShape::kBox;
+  slab.half_extents = Vec3(0.05, 0.05, d);
+  const ColliderKeyframe rest{0.0, Vec3(0.0, 0.0, -d), Quat::Identity()};
+  slab.motion = {rest, rest, {1.2, rest.translation, Quat::Identity(), 1.5}};
+  slab.motion[1].time = 0.2;
+  model.colliders.push_back(slab);
+  Solver solver(model, scene_settings(GetParam(), 1.0 / 300.0, 10));
+  double deepest = 0.0;
+  for (int k = 0; k < 450; ++k) {
+    solver.step();
+    const ColliderKeyframe pose = collider_pose(slab, solver.time());
+    if (k > 30) deepest = std::max(deepest, pose.translation.z() + d * pose.scale - lowest_point(model, grain));
+  }
+  EXPECT_NEAR(lowest_point(model, grain), 0.5 * d, 0.01 * kGrainThickness);
+  EXPECT_LT(deepest, 0.01 * kGrainThickness);
 }
 
 TEST(Colliders, AColliderHeldBetweenTwoEqualKeyframesHasExactlyThatPose) {

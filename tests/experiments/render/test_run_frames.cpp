@@ -1,7 +1,8 @@
 // A scene run's frames read back for rendering (experiments/render/run_frames.hpp): a soft
 // run's grains, carried through their embeddings, are the render meshes the run itself wrote
-// (frames/frame_NNNN.ply), and its frames render; a frame whose rows do not match the grains'
-// simulation meshes is refused, naming the file.
+// (frames/frame_NNNN.ply), and its frames render; a grain close to rigid is drawn as its
+// variant at its best rigid fit; a frame whose rows do not match the grains' simulation
+// meshes is refused, naming the file.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <string>
 
 #include "experiments/render/render_command.hpp"
+#include "experiments/render/rigid_fit.hpp"
 #include "experiments/render/run_frames.hpp"
 #include "experiments/scene/render_mesh_observer.hpp"
 #include "experiments/scene/scene_run.hpp"
@@ -49,7 +51,7 @@ TEST(RunFrames, ASoftRunsGrainsAreTheRenderMeshesTheRunWrote) {
   const std::vector<SoftGrain> soft = soft_run_grains(grains_csv, read_numeric_csv(run_frame_path(run, 3)), variants);
   ASSERT_EQ(soft.size(), 3u);
   std::vector<grains::SurfaceMesh> meshes;
-  for (const SoftGrain& grain : soft) meshes.push_back(grain.mesh);
+  for (const SoftGrain& grain : soft) meshes.push_back(deformed_render_mesh(grain, variants));
   const grains::SurfaceMesh ours = merged(meshes);
   const grains::SurfaceMesh written = grains::read_surface_mesh(run / "frames" / "frame_0003.ply");
   ASSERT_EQ(ours.V.rows(), written.V.rows());
@@ -67,12 +69,55 @@ TEST(RunFrames, ASoftRunRendersWithEitherCurvature) {
   settings.render.height = 16;
   settings.render.samples_per_pixel = 1;
   for (SoftCurvature curvature : {SoftCurvature::kRest, SoftCurvature::kDeformed}) {
-    settings.soft_curvature = curvature;
+    settings.soft = {.curvature = curvature, .instance_tolerance = 0.0};
     const fs::path out = fs::path(RICE_TEST_SCRATCH) / "run-frames-soft-render";
     fs::remove_all(out);
     render_command(settings, out);
     EXPECT_TRUE(fs::exists(out / "render.png"));
   }
+}
+
+TEST(RunFrames, ASoftGrainCloseToRigidIsAnInstanceOfItsVariantAtItsFit) {
+  // The clump's three grains, a little deformed where they touch: each one's variant placed at
+  // its fit is its deformed render mesh to within a few times the fit's residual. With no
+  // tolerance each grain is a mesh of its own; with one above every residual, none is, and
+  // the scene holds just the variants.
+  const fs::path run = soft_run();
+  const RunVariants variants = read_run_variants(run);
+  const fs::path frame = run_frame_path(run, 3);
+  for (const SoftGrain& grain :
+       soft_run_grains(read_numeric_csv(run / "grains.csv"), read_numeric_csv(frame), variants)) {
+    const RigidFit fit = fit_rigid_motion(variants.simulation[grain.variant].V, grain.swell, grain.x);
+    EXPECT_LT(fit.residual, 1e-4);  // (the clump's grains touch: up to 18 µm)
+    const grains::Vertices placed = (fit.place * variants.meshes[grain.variant].V.transpose()).transpose();
+    EXPECT_LT((placed - deformed_render_mesh(grain, variants).V).rowwise().norm().maxCoeff(), 3.0 * fit.residual + 1e-12);
+  }
+  for (const double tolerance : {0.0, 1e-3}) {
+    shading::RenderScene scene;
+    std::vector<Eigen::AlignedBox3d> boxes;
+    const int own = add_run_grains(scene, run, variants, frame, boxes, {.instance_tolerance = tolerance});
+    EXPECT_EQ(own, tolerance > 0.0 ? 0 : 3) << tolerance;
+    EXPECT_EQ(scene.instance_count(), 3);
+    EXPECT_EQ(scene.prototype_count(), tolerance > 0.0 ? static_cast<int>(variants.meshes.size()) : 3);
+  }
+}
+
+TEST(RigidFit, RecoversAKnownMotionAndMeasuresADisplacedVertex) {
+  grains::Vertices rest(5, 3);
+  rest << 0, 0, 0, 1, 0, 0, 0, 2, 0, 0, 0, 3, 1, 1, 1;
+  const Eigen::Affine3d motion = Eigen::Translation3d(0.3, -0.2, 1.0) *
+                                 Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()) * Eigen::Scaling(1.2);
+  grains::Vertices x = (motion * rest.transpose()).transpose();
+  RigidFit fit = fit_rigid_motion(rest, 1.2, x);
+  EXPECT_LT((fit.place.matrix() - motion.matrix()).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT(fit.residual, 1e-12);
+  // One vertex pushed off by d: the fit spreads it over the others, its residual stays ≤ d.
+  const double d = 1e-3;
+  x(4, 2) += d;
+  fit = fit_rigid_motion(rest, 1.2, x);
+  EXPECT_GT(fit.residual, 0.5 * d);
+  EXPECT_LE(fit.residual, d);
+  EXPECT_THROW(fit_rigid_motion(rest, 1.2, x.topRows(4)), std::invalid_argument);
 }
 
 TEST(RunFrames, AFrameThatDoesNotMatchTheGrainsIsRefused) {

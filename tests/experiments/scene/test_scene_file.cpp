@@ -178,7 +178,7 @@ shape = "box"
 half_extents_m = [0.03, 0.02, 0.005]
 static_friction = 0.2
 keyframes = [ { time_s = 0.0, position_m = [0.0, 0.0, 0.08] },
-              { time_s = 1.5, position_m = [0.0, 0.0, 0.01], axis = [0.0, 0.0, 1.0], angle_deg = 90 } ]
+              { time_s = 1.5, position_m = [0.0, 0.0, 0.01], axis = [0.0, 0.0, 1.0], angle_deg = 90, size = 0.9 } ]
 [[colliders]]
 shape = "capsule"
 radius_m = 0.01
@@ -196,6 +196,8 @@ half_length_m = 0.03
   EXPECT_EQ(hand.dynamic_friction, 0.2);  // capped by its own static friction
   ASSERT_EQ(hand.motion.size(), 2u);
   EXPECT_EQ(hand.motion[1].time, 1.5);
+  EXPECT_EQ(hand.motion[0].scale, 1.0);
+  EXPECT_EQ(hand.motion[1].scale, 0.9);
   EXPECT_NEAR((hand.motion[1].rotation * xpbd::Vec3::UnitX() - xpbd::Vec3::UnitY()).norm(), 0.0, 1e-12);
   EXPECT_EQ(scene.colliders[2].half_length, 0.03);
   EXPECT_NO_THROW(validate(scene));
@@ -208,6 +210,9 @@ half_length_m = 0.03
   EXPECT_TRUE(error_of(box + "half_extents_m = [1, 2, 3]\nradius_m = 1\n").starts_with("bad.toml:4: [colliders.1] has no key 'radius_m'"));
   EXPECT_TRUE(error_of(box + "half_extents_m = [1, 2, 3]\nkeyframes = [ { time_s = 1.0 }, { time_s = 0.5 } ]\n")
                   .starts_with("bad.toml:4: [colliders.1.keyframes.2] time_s = 0.5: expected a time in s after the previous"));
+  EXPECT_TRUE(error_of(box + "half_extents_m = [1, 2, 3]\nkeyframes = [ { size = 0 } ]\n")
+                  .starts_with("bad.toml:4: [colliders.1.keyframes.1] size = 0: expected a number in (0, 10]"))
+      << error_of(box + "half_extents_m = [1, 2, 3]\nkeyframes = [ { size = 0 } ]\n");
   EXPECT_TRUE(error_of(box + "half_extents_m = [1, 2, 3]\nkeyframes = 3\n").starts_with("bad.toml:4: [colliders.1] keyframes = 3: expected a list"));
   EXPECT_TRUE(error_of("colliders = 3\n").starts_with("bad.toml:1: 'colliders' must be a list of [[colliders]] tables"));
 }

@@ -1,0 +1,31 @@
+// `rice study soft-instances`: what drawing near-rigid soft grains as instances costs and saves
+// (issue 23, part 3). A soft grain is drawn as its own deformed mesh, or, when its simulation
+// vertices all lie within a tolerance of its best rigid fit (rigid_fit.hpp), as an instance of
+// its variant, sharing the variant's hierarchy as a rigid grain does. On one frame of a soft
+// run this study writes:
+//  - soft_instance_grains.csv: each grain's fit residual;
+//  - soft_instances.csv: per tolerance, the grains drawn as their own mesh, the render's wall
+//    time and the image's RMS difference from the render with every grain its own mesh
+//    (tolerance 0), relative to its mean radiance; soft_instances.png plots error against time;
+//  - the renders (tolerance_N/) and run_info.txt.
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+namespace rice::experiments {
+
+struct SoftInstanceStudySettings {
+  std::filesystem::path run;  ///< a soft scene run's output folder
+  int frame = 0;              ///< 0: its last
+  int width = 320, height = 240, samples_per_pixel = 16;
+  std::vector<double> tolerances{0.0, 2e-6, 5e-6, 2e-5, 1e-4, 1.0};  ///< [m]; 0 is the reference and always run
+};
+
+/// Throws std::invalid_argument for a missing run folder, sizes that are not positive or a
+/// tolerance below 0.
+void validate(const SoftInstanceStudySettings& settings);
+
+void soft_instance_study_command(const SoftInstanceStudySettings& settings, const std::filesystem::path& folder);
+
+}  // namespace rice::experiments
