@@ -52,7 +52,8 @@ RenderScene::RenderScene() : embree_(std::make_unique<Embree>()) {
 
 RenderScene::~RenderScene() = default;
 
-int RenderScene::add_prototype(const MeshVertices& V, const MeshTriangles& F, const Eigen::VectorXd& curvature) {
+int RenderScene::add_prototype(const MeshVertices& V, const MeshTriangles& F, const Eigen::VectorXd& curvature,
+                               Reuse reuse) {
   if (committed_) throw std::logic_error("RenderScene: add_prototype after commit");
   if (V.rows() == 0 || F.rows() == 0) throw std::invalid_argument("RenderScene: a prototype needs vertices and triangles");
   if (F.minCoeff() < 0 || F.maxCoeff() >= V.rows())
@@ -69,8 +70,9 @@ int RenderScene::add_prototype(const MeshVertices& V, const MeshTriangles& F, co
   }
   for (Eigen::Index f = 0; f < F.rows(); ++f) prototype->triangles.push_back(F.row(f).transpose());
 
+  const RTCBuildQuality quality = reuse == Reuse::kShared ? RTC_BUILD_QUALITY_HIGH : RTC_BUILD_QUALITY_MEDIUM;
   RTCGeometry mesh = rtcNewGeometry(embree_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  rtcSetGeometryBuildQuality(mesh, RTC_BUILD_QUALITY_HIGH);
+  rtcSetGeometryBuildQuality(mesh, quality);
   auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                                 3 * sizeof(float), static_cast<size_t>(V.rows())));
   for (Eigen::Index v = 0; v < V.rows(); ++v)
@@ -82,7 +84,7 @@ int RenderScene::add_prototype(const MeshVertices& V, const MeshTriangles& F, co
   rtcCommitGeometry(mesh);
   prototype->scene = rtcNewScene(embree_->device);
   rtcSetSceneFlags(prototype->scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);  // occluded(…, ignore)
-  rtcSetSceneBuildQuality(prototype->scene, RTC_BUILD_QUALITY_HIGH);  // built once, traced billions of times
+  rtcSetSceneBuildQuality(prototype->scene, quality);
   rtcAttachGeometry(prototype->scene, mesh);
   rtcReleaseGeometry(mesh);
   rtcCommitScene(prototype->scene);

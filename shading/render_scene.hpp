@@ -41,10 +41,19 @@ class RenderScene {
   RenderScene(const RenderScene&) = delete;
   RenderScene& operator=(const RenderScene&) = delete;
 
+  /// How often a prototype is placed, which picks its hierarchy's build quality.
+  enum class Reuse {
+    kShared,  ///< by many instances (a grain variant): Embree's high quality, spatial splits
+    /// by one instance (a soft grain's deformed mesh, rebuilt every frame): medium quality,
+    /// which built the bunny's 3400 deformed grains in 78 s instead of 194 s, and in 15.4
+    /// instead of 16.4 GB, for the same ray time (docs/rendering.md)
+    kSingle,
+  };
   /// A mesh to instance (V #V×3, F #F×3, outward counter-clockwise). `curvature` is #V vertex
   /// mean curvatures or empty (zero: flat). Returns its prototype index. Throws
   /// std::invalid_argument for an empty mesh, bad indices or a curvature of the wrong size.
-  int add_prototype(const MeshVertices& V, const MeshTriangles& F, const Eigen::VectorXd& curvature = {});
+  int add_prototype(const MeshVertices& V, const MeshTriangles& F, const Eigen::VectorXd& curvature = {},
+                    Reuse reuse = Reuse::kShared);
 
   /// Places a prototype: `transform` must be a rotation, a uniform scale and a translation
   /// (curvature scales by 1/s); throws std::invalid_argument otherwise. Returns its index.

@@ -160,7 +160,8 @@ int add_soft_grains(shading::RenderScene& scene, const NumericCsv& grains_csv, c
     const Eigen::VectorXd H = soft.curvature == SoftCurvature::kRest
                                   ? Eigen::VectorXd(variants.curvature[grain.variant] / grain.swell)
                                   : shading::vertex_mean_curvature(mesh.V, mesh.F);
-    scene.add_instance(scene.add_prototype(mesh.V, mesh.F, H), Eigen::Affine3d::Identity(), 0);
+    scene.add_instance(scene.add_prototype(mesh.V, mesh.F, H, shading::RenderScene::Reuse::kSingle),
+                       Eigen::Affine3d::Identity(), 0);
     boxes.push_back(placed_box(mesh.V, Eigen::Affine3d::Identity()));
     ++own;
   }
