@@ -45,8 +45,8 @@ class RenderScene {
   enum class Reuse {
     kShared,  ///< by many instances (a grain variant): Embree's high quality, spatial splits
     /// by one instance (a soft grain's deformed mesh, rebuilt every frame): medium quality,
-    /// which built the bunny's 3400 deformed grains in 78 s instead of 194 s, and in 15.4
-    /// instead of 16.4 GB, for the same ray time (docs/rendering.md)
+    /// which halves the time to render a soft run's frame of many grains, for the same image
+    /// (docs/rendering.md)
     kSingle,
   };
   /// A mesh to instance (V #V×3, F #F×3, outward counter-clockwise). `curvature` is #V vertex
