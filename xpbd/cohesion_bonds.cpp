@@ -13,11 +13,12 @@ void CohesionBonds::begin_substep(const Model& model, const std::vector<Touch>& 
                                      [](const Bond& bond, const std::array<int, 4>& k) { return bond.key < k; });
     return at != bonds_.begin() + held && at->key == key;
   };
-  std::set<std::pair<int, int>> still_touching;
+  std::map<std::pair<int, int>, double> still_touching;
   for (const Touch& touch : touches) {
     const auto [a, b, sa, sb] = touch.key;
-    if (broken_pairs_.count({a, b})) {
-      still_touching.emplace(a, b);
+    const auto broken = broken_pairs_.find({a, b});
+    if (broken != broken_pairs_.end() && broken->second < model.contact.bond_heal_time) {
+      still_touching.insert(*broken);
       continue;
     }
     const Body& body_a = model.bodies[a];
@@ -114,11 +115,12 @@ void CohesionBonds::end_substep(double h) {
       kept.insert(kept.end(), bonds_.begin() + first, bonds_.begin() + last);
     } else {
       ++broken_;
-      broken_pairs_.emplace(bonds_[first].key[0], bonds_[first].key[1]);
+      broken_pairs_[{bonds_[first].key[0], bonds_[first].key[1]}] = 0.0;
     }
     first = last;
   }
   bonds_ = std::move(kept);
+  for (auto& [pair, touched] : broken_pairs_) touched += h;
 }
 
 }  // namespace rice::xpbd

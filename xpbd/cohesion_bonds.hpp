@@ -16,7 +16,7 @@
 #pragma once
 
 #include <array>
-#include <set>
+#include <map>
 #include <vector>
 
 #include "xpbd/model.hpp"
@@ -35,8 +35,9 @@ class CohesionBonds {
   /// One Gauss–Seidel sweep over the bonds (XPBD eq. 18 with compliance α of the settings).
   void project(Model& model, double h);
   /// Starts a substep: bonds every touch that has no bond, unless its body pair broke and has
-  /// not separated since (a pair pulled apart is not glued back before it moves), and resets
-  /// the multipliers. `x_previous`: the particle positions at the substep's start.
+  /// neither separated since nor touched for ContactSettings::bond_heal_time (a pair pulled
+  /// apart is not glued back before it moves), and resets the multipliers. `x_previous`: the
+  /// particle positions at the substep's start.
   void begin_substep(const Model& model, const std::vector<Touch>& touches, const Positions& x_previous);
   /// Adds every bond between two soft bodies, not both asleep, to `terms` as a spring of
   /// stiffness min(1/α, ContactSettings::particle_stiffness) (α > 0); project() then skips
@@ -44,7 +45,8 @@ class CohesionBonds {
   void hold_in_particle_steps(const Model& model, ParticleContacts& terms);
   /// After the sweeps: each held bond's impulse λ = −k* C_b h² at x, for end_substep.
   void take_particle_forces(const ParticleContacts& terms, const Positions& x, double h);
-  /// Breaks the body pairs whose bonds' force over the substep exceeded their strength.
+  /// Breaks the body pairs whose bonds' force over the substep exceeded their strength, and
+  /// counts h into how long each broken pair has touched.
   void end_substep(double h);
   int count() const { return static_cast<int>(bonds_.size()); }
   int broken() const { return broken_; }  ///< body pairs whose bonds broke
@@ -62,7 +64,8 @@ class CohesionBonds {
   /// Sorted by key at each substep's end (a substep's new bonds are appended), so a pair's
   /// bonds are contiguous.
   std::vector<Bond> bonds_;
-  std::set<std::pair<int, int>> broken_pairs_;  ///< broken and not yet separated
+  /// Broken and neither separated nor healed yet: how long each has touched since [s].
+  std::map<std::pair<int, int>, double> broken_pairs_;
   bool sorted_ = true;
   int broken_ = 0;
 };

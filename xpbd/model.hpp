@@ -110,6 +110,11 @@ struct ContactSettings {
   /// Two spheres closer than this [m] form a bond (1% of a grain's thickness), when they are
   /// a contact too (their gap within the margin and their motion).
   double bond_distance = 2e-5;
+  /// A body pair whose bonds broke bonds again once its spheres have touched (within
+  /// bond_distance) for this long [s] without a break, as cooked rice pressed back together
+  /// sticks again; it bonds anew at once when it has separated first. INFINITY: never while
+  /// touching (a pile churned by a fill then keeps most of its contacts unbonded).
+  double bond_heal_time = INFINITY;
   /// k of contacts held in each particle's step under vertex block descent
   /// (particle_contacts.hpp) [N/m]: how hard a sweep pushes an overlap apart, and the step of
   /// the force's update each substep. Best near a grain tet's own stiffness (μ × edge ≈ 100 N/m

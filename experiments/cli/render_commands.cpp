@@ -27,7 +27,8 @@ class RenderCommands : public CommandFamily {
         ->capture_default_str();
     c->add_flag("--every-frame", render_.every_frame, "every frame of the run into frame_NNNN.png, framed as the last");
     c->add_flag("--deformed-curvature", deformed_curvature_,
-                "soft grains shaded with the curvature of their deformed meshes (default: their rest curvature)");
+                "soft grains drawn as their own mesh shaded with its curvature (default: their rest curvature; with "
+                "--soft-instance-tolerance 0, every soft grain)");
     c->add_option("--soft-instance-tolerance", render_.soft.instance_tolerance,
                   "[m] a soft grain this close to its best rigid fit is drawn as an instance of its variant (0: every "
                   "soft grain its own deformed mesh)")

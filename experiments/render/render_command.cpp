@@ -264,4 +264,18 @@ shading::Camera render_command(const RenderCommandSettings& settings, const std:
   return *camera;
 }
 
+double timed_run_render(const std::filesystem::path& run, int frame, int width, int height, int spp,
+                        const SoftGrainDrawing& soft, const std::filesystem::path& folder) {
+  RenderCommandSettings r;
+  r.run = run;
+  r.frame = frame;
+  r.render.width = width;
+  r.render.height = height;
+  r.render.samples_per_pixel = spp;
+  r.soft = soft;
+  const auto start = std::chrono::steady_clock::now();
+  render_command(r, folder);
+  return seconds_since(start);
+}
+
 }  // namespace rice::experiments

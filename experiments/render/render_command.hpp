@@ -49,4 +49,9 @@ void validate(const RenderCommandSettings& settings);
 /// Renders into `folder`; returns the camera it used (the framed one when none was given).
 shading::Camera render_command(const RenderCommandSettings& settings, const std::filesystem::path& folder);
 
+/// Frame `frame` of the scene run `run` (0: its last) at width × height and `spp` samples, its
+/// soft grains drawn as `soft`, into `folder` (the soft-grain studies); returns the wall time [s].
+double timed_run_render(const std::filesystem::path& run, int frame, int width, int height, int spp,
+                        const SoftGrainDrawing& soft, const std::filesystem::path& folder);
+
 }  // namespace rice::experiments

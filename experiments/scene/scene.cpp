@@ -31,6 +31,7 @@ void validate_grains_and_solver(const Scene& s) {
   check(scene_key("grains", "soak_minutes"), s.grains.soak_minutes);
   check(scene_key("grains", "soak_temperature_c"), s.grains.soak_temperature);
   if (!std::isnan(s.grains.stickiness)) check(scene_key("grains", "stickiness"), s.grains.stickiness);
+  if (!std::isnan(s.grains.heal_time)) check(scene_key("grains", "heal_s"), s.grains.heal_time);
   check(scene_key("solver", "fps"), s.solver.fps);
   check(scene_key("solver", "frames"), s.solver.frames);
   check(scene_key("solver", "substeps"), s.solver.substeps);

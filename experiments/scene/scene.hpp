@@ -49,6 +49,8 @@ struct SceneGrains {
   /// Pull-off force of two touching grains at the reference soak, in grain weights
   /// (grains::Cultivar::stickiness); NaN: the cultivar's.
   double stickiness = std::nan("");
+  /// (xpbd::ContactSettings::bond_heal_time) [s]; NaN: never while touching.
+  double heal_time = std::nan("");
 };
 
 /// [solver]: how time advances.

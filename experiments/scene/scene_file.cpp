@@ -82,6 +82,7 @@ void read_grains(TomlSection section, SceneGrains& g) {
   g.soak_minutes = section.number("soak_minutes");
   g.soak_temperature = section.number("soak_temperature_c");
   g.stickiness = section.number("stickiness");
+  g.heal_time = section.number("heal_s");
   section.finish();
 }
 

@@ -83,6 +83,8 @@ std::vector<SceneKey> scene_and_grain_keys() {
       number("grains", "soak_temperature_c", closed(0, 100), 10.0, "soaking water's temperature [°C]"),
       number("grains", "stickiness", closed(0, 1000), {},
              "pull-off force of two touching grains at the reference soak, in grain weights", "the cultivar's"),
+      number("grains", "heal_s", closed(0, 1e4), {},
+             "two grains whose bond broke stick again once they have touched this long [s]", "never while touching"),
   };
 }
 

@@ -57,6 +57,7 @@ RunInfoEntries scene_entries(const Scene& scene, const World& world) {
           {"cohesion", scene.effects.cohesion ? "on" : "off"},
           {"damping", scene.effects.damping ? "on" : "off"},
           {"pull_off_force_in_weights", cell(world.pull_off_in_weights)},
+          {"bond_heal_s", cell(world.model.contact.bond_heal_time)},
           {"sleeping", scene.effects.sleeping ? "on" : "off"},
           {"static_friction", cell(scene.effects.static_friction)},
           {"dynamic_friction", cell(scene.effects.dynamic_friction)},

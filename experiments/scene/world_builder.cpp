@@ -125,6 +125,7 @@ World build_world(const Scene& scene, Emitter& emitter) {
   world.model.contact.static_friction = scene.effects.static_friction;
   world.model.contact.dynamic_friction = scene.effects.dynamic_friction;
   world.model.contact.cohesion = scene.effects.cohesion;
+  if (!std::isnan(scene.grains.heal_time)) world.model.contact.bond_heal_time = scene.grains.heal_time;
   world.model.contact.radius_interval = scene.solver.radius_interval;
   world.model.sleep.enabled = scene.effects.sleeping;
   add_bodies(scene, world);

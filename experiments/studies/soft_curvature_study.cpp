@@ -51,20 +51,6 @@ CsvTable compare_curvature(const SoftCurvatureStudySettings& s, const RunVariant
   return table;
 }
 
-/// The frame rendered with `curvature` into folder/name; returns its wall time.
-double render_with(const SoftCurvatureStudySettings& s, SoftCurvature curvature, const std::filesystem::path& folder) {
-  RenderCommandSettings r;
-  r.run = s.run;
-  r.frame = s.frame;
-  r.render.width = s.width;
-  r.render.height = s.height;
-  r.render.samples_per_pixel = s.samples_per_pixel;
-  r.soft = {.curvature = curvature, .instance_tolerance = 0.0};  // every grain its own mesh
-  const auto start = std::chrono::steady_clock::now();
-  render_command(r, folder);
-  return seconds_since(start);
-}
-
 }  // namespace
 
 void validate(const SoftCurvatureStudySettings& s) {
@@ -81,8 +67,13 @@ void soft_curvature_study_command(const SoftCurvatureStudySettings& s, const std
   CurvatureTotals totals;
   const CsvTable table = compare_curvature(s, variants, totals);
   write_file_atomically(folder / "soft_curvature.csv", table.text());
-  const double rest_s = render_with(s, SoftCurvature::kRest, folder / "rest");
-  const double deformed_s = render_with(s, SoftCurvature::kDeformed, folder / "deformed");
+  // Every grain its own mesh, so that each is shaded as the option says.
+  const auto render_with = [&](SoftCurvature curvature, const std::filesystem::path& images) {
+    return timed_run_render(s.run, s.frame, s.width, s.height, s.samples_per_pixel,
+                            {.curvature = curvature, .instance_tolerance = 0.0}, images);
+  };
+  const double rest_s = render_with(SoftCurvature::kRest, folder / "rest");
+  const double deformed_s = render_with(SoftCurvature::kDeformed, folder / "deformed");
   const shading::Image rest = read_exr(folder / "rest" / "render.exr");
   const shading::Image deformed = read_exr(folder / "deformed" / "render.exr");
   const double image_error = shading::rms_difference(rest, deformed) / shading::mean_radiance(deformed);

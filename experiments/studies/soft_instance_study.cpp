@@ -2,7 +2,6 @@
 #include "experiments/studies/soft_instance_study.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <stdexcept>
 
@@ -33,20 +32,6 @@ std::vector<double> fit_residuals(const SoftInstanceStudySettings& s, const std:
   }
   write_file_atomically(folder / "soft_instance_grains.csv", table.text());
   return residuals;
-}
-
-/// The frame rendered at one tolerance into `folder`; returns its wall time.
-double render_at(const SoftInstanceStudySettings& s, double tolerance, const std::filesystem::path& folder) {
-  RenderCommandSettings r;
-  r.run = s.run;
-  r.frame = s.frame;
-  r.render.width = s.width;
-  r.render.height = s.height;
-  r.render.samples_per_pixel = s.samples_per_pixel;
-  r.soft.instance_tolerance = tolerance;
-  const auto start = std::chrono::steady_clock::now();
-  render_command(r, folder);
-  return seconds_since(start);
 }
 
 void plot(const std::filesystem::path& folder) {
@@ -80,10 +65,16 @@ void soft_instance_study_command(const SoftInstanceStudySettings& s, const std::
   std::sort(tolerances.begin(), tolerances.end());
   tolerances.erase(std::unique(tolerances.begin(), tolerances.end()), tolerances.end());
   CsvTable table({"tolerance_m", "grains", "own_meshes", "render_s", "image_relative_rms"});
+  const auto render_at = [&](double tolerance, const std::filesystem::path& images) {
+    return timed_run_render(s.run, s.frame, s.width, s.height, s.samples_per_pixel,
+                            {.instance_tolerance = tolerance}, images);
+  };
+  render_at(0.0, folder / "warm_up");  // the first render also reads the run from disk
+  std::filesystem::remove_all(folder / "warm_up");
   shading::Image reference;
   for (size_t k = 0; k < tolerances.size(); ++k) {
     const std::filesystem::path images = folder / ("tolerance_" + std::to_string(k));
-    const double seconds = render_at(s, tolerances[k], images);
+    const double seconds = render_at(tolerances[k], images);
     const shading::Image image = read_exr(images / "render.exr");
     if (k == 0) reference = image;
     const double error = shading::rms_difference(image, reference) / shading::mean_radiance(reference);

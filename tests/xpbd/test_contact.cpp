@@ -9,6 +9,7 @@
 
 #include "tests/xpbd/grain_fixtures.hpp"
 #include "xpbd/broad_phase.hpp"
+#include "xpbd/cohesion_bonds.hpp"
 #include "xpbd/contact_solver.hpp"
 #include "xpbd/distance_grid.hpp"
 #include "xpbd/energy.hpp"
@@ -667,6 +668,58 @@ TEST(Penetration, MeasuresAKnownOverlapAndDepthIntoACollider) {
   EXPECT_NEAR(p.between_bodies, 3e-4, 1e-12);
   EXPECT_NEAR(p.into_colliders, 1e-4, 1e-12);
   EXPECT_NEAR(p.deepest(), 3e-4, 1e-12);
+}
+
+/// Two rigid grains stacked and touching, whose one bond has just broken (any pull breaks it):
+/// `touching` is their touch, to hand to each substep's begin.
+struct BrokenPair {
+  static constexpr double h = 1e-4;
+  Model model;
+  CohesionBonds bonds;
+  std::vector<CohesionBonds::Touch> touching;
+
+  explicit BrokenPair(double heal_time) {
+    add_grain(model, BodyKind::kRigid, Vec3::Zero());
+    add_grain(model, BodyKind::kRigid, Vec3(0.0, 0.0, kGrainThickness));
+    for (Body& body : model.bodies) body.bond_strength = 1e-9;  // [N]
+    model.contact.bond_heal_time = heal_time;
+    for (RigidBody& rigid : model.rigid_bodies) rigid.remember_pose();
+    const Body& bottom = model.bodies[0];
+    const Vec3 p = sphere_centre(model, bottom, 0) + sphere_radius(model, bottom, 0) * Vec3::UnitZ();
+    touching = {{{0, 1, 0, 0}, p, p}};
+    bonds.begin_substep(model, touching, model.particles.x);
+    EXPECT_EQ(bonds.count(), 1);
+    model.rigid_bodies[1].x.z() += 1e-5;  // pulled: the bond's projection carries a force
+    bonds.project(model, h);
+    bonds.end_substep(h);
+    model.rigid_bodies[1].x.z() -= 1e-5;
+    EXPECT_EQ(bonds.count(), 0);
+    EXPECT_EQ(bonds.broken(), 1);
+  }
+  /// One substep with the pair touching or apart; returns whether it is bonded in it.
+  bool substep(bool touch) {
+    bonds.begin_substep(model, touch ? touching : std::vector<CohesionBonds::Touch>{}, model.particles.x);
+    const bool bonded = bonds.count() > 0;
+    bonds.end_substep(h);
+    return bonded;
+  }
+};
+
+TEST(GrainContact, ABrokenPairBondsAgainOnceItHasTouchedForTheHealTime) {
+  // 2 ms at 0.1 ms substeps: bonded again at the 20th substep of touching (21st by round-off).
+  BrokenPair pair(2e-3);
+  int healed = 0;
+  while (healed < 1000 && !pair.substep(true)) ++healed;
+  EXPECT_GE(healed + 1, 19);
+  EXPECT_LE(healed + 1, 21);
+}
+
+TEST(GrainContact, ABrokenPairStaysUnbondedWhileItTouchesAndBondsOnceItHasSeparated) {
+  // Without a heal time a pair pulled apart is not glued back before it moves.
+  BrokenPair pair(INFINITY);
+  for (int k = 0; k < 1000; ++k) ASSERT_FALSE(pair.substep(true)) << k;
+  EXPECT_FALSE(pair.substep(false));  // apart for a substep
+  EXPECT_TRUE(pair.substep(true));
 }
 
 TEST(GrainContact, CohesionOffFormsNoBonds) {
