@@ -77,16 +77,22 @@ class StudyCommands : public CommandFamily {
     add(c, [this] { experiments::validate(render_); }, [this] { render_study_command(render_, render_out_); });
   }
 
+  /// --run, --frame, --width, --height and --spp of the soft-grain studies.
+  static void add_run_frame_options(CLI::App* c, RunFrameImage& image) {
+    c->add_option("--run", image.run, "a soft scene run's output folder (rice run)")->required();
+    c->add_option("--frame", image.frame, "the run's frame (0: the last)")->check(number_in(0, 1e6))->capture_default_str();
+    c->add_option("--width", image.width, "pixels")->check(number_in(8, 4096))->capture_default_str();
+    c->add_option("--height", image.height, "pixels")->check(number_in(8, 4096))->capture_default_str();
+    c->add_option("--spp", image.samples_per_pixel, "samples per pixel")->check(number_in(1, 65536))
+        ->capture_default_str();
+  }
+
   void add_soft_curvature(CLI::App* study) {
     CLI::App* c = study->add_subcommand(
         "soft-curvature", "a soft run's frame: rest against recomputed curvature of the deformed grains, error and time");
     SoftCurvatureStudySettings& s = soft_curvature_;
-    c->add_option("--run", s.run, "a soft scene run's output folder (rice run)")->required();
-    c->add_option("--frame", s.frame, "the run's frame (0: the last)")->check(number_in(0, 1e6))->capture_default_str();
+    add_run_frame_options(c, s.image);
     c->add_option("--out", soft_curvature_out_, "output folder")->capture_default_str();
-    c->add_option("--width", s.width, "pixels")->check(number_in(8, 4096))->capture_default_str();
-    c->add_option("--height", s.height, "pixels")->check(number_in(8, 4096))->capture_default_str();
-    c->add_option("--spp", s.samples_per_pixel, "samples per pixel")->check(number_in(1, 65536))->capture_default_str();
     add(c, [this] { experiments::validate(soft_curvature_); },
         [this] { soft_curvature_study_command(soft_curvature_, soft_curvature_out_); });
   }
@@ -95,12 +101,8 @@ class StudyCommands : public CommandFamily {
     CLI::App* c = study->add_subcommand(
         "soft-instances", "a soft run's frame: near-rigid grains drawn as instances, image error and time per tolerance");
     SoftInstanceStudySettings& s = soft_instances_;
-    c->add_option("--run", s.run, "a soft scene run's output folder (rice run)")->required();
-    c->add_option("--frame", s.frame, "the run's frame (0: the last)")->check(number_in(0, 1e6))->capture_default_str();
+    add_run_frame_options(c, s.image);
     c->add_option("--out", soft_instances_out_, "output folder")->capture_default_str();
-    c->add_option("--width", s.width, "pixels")->check(number_in(8, 4096))->capture_default_str();
-    c->add_option("--height", s.height, "pixels")->check(number_in(8, 4096))->capture_default_str();
-    c->add_option("--spp", s.samples_per_pixel, "samples per pixel")->check(number_in(1, 65536))->capture_default_str();
     c->add_option("--tolerances", s.tolerances, "[m] fit tolerances to sweep (0, every grain its own mesh, always)")
         ->check(number_in(0, 1))->capture_default_str();
     add(c, [this] { experiments::validate(soft_instances_); },

@@ -264,14 +264,20 @@ shading::Camera render_command(const RenderCommandSettings& settings, const std:
   return *camera;
 }
 
-double timed_run_render(const std::filesystem::path& run, int frame, int width, int height, int spp,
-                        const SoftGrainDrawing& soft, const std::filesystem::path& folder) {
+void validate(const RunFrameImage& image) {
+  if (image.run.empty() || !std::filesystem::is_directory(image.run))
+    throw std::invalid_argument("--run: '" + image.run.string() + "' is not a run's folder");
+  if (image.width < 1 || image.height < 1 || image.samples_per_pixel < 1)
+    throw std::invalid_argument("--width, --height and --spp must be positive");
+}
+
+double timed_run_render(const RunFrameImage& image, const SoftGrainDrawing& soft, const std::filesystem::path& folder) {
   RenderCommandSettings r;
-  r.run = run;
-  r.frame = frame;
-  r.render.width = width;
-  r.render.height = height;
-  r.render.samples_per_pixel = spp;
+  r.run = image.run;
+  r.frame = image.frame;
+  r.render.width = image.width;
+  r.render.height = image.height;
+  r.render.samples_per_pixel = image.samples_per_pixel;
   r.soft = soft;
   const auto start = std::chrono::steady_clock::now();
   render_command(r, folder);

@@ -49,9 +49,18 @@ void validate(const RenderCommandSettings& settings);
 /// Renders into `folder`; returns the camera it used (the framed one when none was given).
 shading::Camera render_command(const RenderCommandSettings& settings, const std::filesystem::path& folder);
 
-/// Frame `frame` of the scene run `run` (0: its last) at width × height and `spp` samples, its
-/// soft grains drawn as `soft`, into `folder` (the soft-grain studies); returns the wall time [s].
-double timed_run_render(const std::filesystem::path& run, int frame, int width, int height, int spp,
-                        const SoftGrainDrawing& soft, const std::filesystem::path& folder);
+/// One frame of a scene run at a preview size: what the soft-grain studies render.
+struct RunFrameImage {
+  std::filesystem::path run;  ///< a soft scene run's output folder
+  int frame = 0;              ///< 0: its last
+  int width = 320, height = 240, samples_per_pixel = 16;
+};
+
+/// Throws std::invalid_argument for a missing run folder or sizes that are not positive.
+void validate(const RunFrameImage& image);
+
+/// The image rendered with the run's soft grains drawn as `soft`, into `folder`; returns the
+/// wall time [s].
+double timed_run_render(const RunFrameImage& image, const SoftGrainDrawing& soft, const std::filesystem::path& folder);
 
 }  // namespace rice::experiments

@@ -27,9 +27,9 @@ struct CurvatureTotals {
 
 /// Each grain's deformed curvature against its rest curvature, one row each.
 CsvTable compare_curvature(const SoftCurvatureStudySettings& s, const RunVariants& variants, CurvatureTotals& totals) {
-  const std::filesystem::path frame = s.frame > 0 ? run_frame_path(s.run, s.frame) : run_frames(s.run).back();
+  const std::filesystem::path frame = s.image.frame > 0 ? run_frame_path(s.image.run, s.image.frame) : run_frames(s.image.run).back();
   const std::vector<SoftGrain> grains =
-      soft_run_grains(read_numeric_csv(s.run / "grains.csv"), read_numeric_csv(frame), variants);
+      soft_run_grains(read_numeric_csv(s.image.run / "grains.csv"), read_numeric_csv(frame), variants);
   CsvTable table({"grain", "variant", "vertices", "relative_rms", "deformed_curvature_s"});
   Progress progress("soft-curvature: grains", static_cast<int>(grains.size()));
   for (const SoftGrain& grain : grains) {
@@ -54,23 +54,19 @@ CsvTable compare_curvature(const SoftCurvatureStudySettings& s, const RunVariant
 }  // namespace
 
 void validate(const SoftCurvatureStudySettings& s) {
-  if (s.run.empty() || !std::filesystem::is_directory(s.run))
-    throw std::invalid_argument("--run: '" + s.run.string() + "' is not a run's folder");
-  if (s.width < 1 || s.height < 1 || s.samples_per_pixel < 1)
-    throw std::invalid_argument("--width, --height and --spp must be positive");
+  validate(s.image);
 }
 
 void soft_curvature_study_command(const SoftCurvatureStudySettings& s, const std::filesystem::path& folder) {
   validate(s);
   make_output_folder(folder);
-  const RunVariants variants = read_run_variants(s.run);
+  const RunVariants variants = read_run_variants(s.image.run);
   CurvatureTotals totals;
   const CsvTable table = compare_curvature(s, variants, totals);
   write_file_atomically(folder / "soft_curvature.csv", table.text());
   // Every grain its own mesh, so that each is shaded as the option says.
   const auto render_with = [&](SoftCurvature curvature, const std::filesystem::path& images) {
-    return timed_run_render(s.run, s.frame, s.width, s.height, s.samples_per_pixel,
-                            {.curvature = curvature, .instance_tolerance = 0.0}, images);
+    return timed_run_render(s.image, {.curvature = curvature, .instance_tolerance = 0.0}, images);
   };
   const double rest_s = render_with(SoftCurvature::kRest, folder / "rest");
   const double deformed_s = render_with(SoftCurvature::kDeformed, folder / "deformed");
@@ -80,8 +76,8 @@ void soft_curvature_study_command(const SoftCurvatureStudySettings& s, const std
   const double mean_relative = totals.relative_rms_sum / totals.grains;
   write_file_atomically(folder / "run_info.txt",
                         run_info({{"command", "study soft-curvature"},
-                                  {"run", s.run.string()},
-                                  {"frame", s.frame > 0 ? cell(s.frame) : "last"},
+                                  {"run", s.image.run.string()},
+                                  {"frame", s.image.frame > 0 ? cell(s.image.frame) : "last"},
                                   {"grains", cell(totals.grains)},
                                   {"curvature_relative_rms_mean", cell(mean_relative)},
                                   {"curvature_relative_rms_worst", cell(totals.worst)},

@@ -12,12 +12,12 @@
 
 #include <filesystem>
 
+#include "experiments/render/render_command.hpp"
+
 namespace rice::experiments {
 
 struct SoftCurvatureStudySettings {
-  std::filesystem::path run;  ///< a soft scene run's output folder
-  int frame = 0;              ///< 0: its last
-  int width = 320, height = 240, samples_per_pixel = 16;
+  RunFrameImage image;
 };
 
 void validate(const SoftCurvatureStudySettings& settings);

@@ -19,10 +19,10 @@ namespace {
 
 /// Each grain's rigid-fit residual, one row each; returns the residuals.
 std::vector<double> fit_residuals(const SoftInstanceStudySettings& s, const std::filesystem::path& folder) {
-  const std::filesystem::path frame = s.frame > 0 ? run_frame_path(s.run, s.frame) : run_frames(s.run).back();
-  const RunVariants variants = read_run_variants(s.run);
+  const std::filesystem::path frame = s.image.frame > 0 ? run_frame_path(s.image.run, s.image.frame) : run_frames(s.image.run).back();
+  const RunVariants variants = read_run_variants(s.image.run);
   const std::vector<SoftGrain> grains =
-      soft_run_grains(read_numeric_csv(s.run / "grains.csv"), read_numeric_csv(frame), variants);
+      soft_run_grains(read_numeric_csv(s.image.run / "grains.csv"), read_numeric_csv(frame), variants);
   if (grains.empty()) throw std::runtime_error("soft-instances: " + frame.string() + " has no grain in the scene");
   CsvTable table({"grain", "variant", "residual_m"});
   std::vector<double> residuals;
@@ -48,10 +48,7 @@ plot 'soft_instances.csv' using 4:($5 > 0 ? $5 : 1/0):(sprintf('%g m', $1)) with
 }  // namespace
 
 void validate(const SoftInstanceStudySettings& s) {
-  if (s.run.empty() || !std::filesystem::is_directory(s.run))
-    throw std::invalid_argument("--run: '" + s.run.string() + "' is not a run's folder");
-  if (s.width < 1 || s.height < 1 || s.samples_per_pixel < 1)
-    throw std::invalid_argument("--width, --height and --spp must be positive");
+  validate(s.image);
   for (const double t : s.tolerances)
     if (!(t >= 0.0)) throw std::invalid_argument("--tolerances must be >= 0 [m]");
 }
@@ -66,8 +63,7 @@ void soft_instance_study_command(const SoftInstanceStudySettings& s, const std::
   tolerances.erase(std::unique(tolerances.begin(), tolerances.end()), tolerances.end());
   CsvTable table({"tolerance_m", "grains", "own_meshes", "render_s", "image_relative_rms"});
   const auto render_at = [&](double tolerance, const std::filesystem::path& images) {
-    return timed_run_render(s.run, s.frame, s.width, s.height, s.samples_per_pixel,
-                            {.instance_tolerance = tolerance}, images);
+    return timed_run_render(s.image, {.instance_tolerance = tolerance}, images);
   };
   render_at(0.0, folder / "warm_up");  // the first render also reads the run from disk
   std::filesystem::remove_all(folder / "warm_up");
@@ -87,11 +83,11 @@ void soft_instance_study_command(const SoftInstanceStudySettings& s, const std::
   write_file_atomically(folder / "soft_instances.csv", table.text());
   plot(folder);
   write_file_atomically(folder / "run_info.txt", run_info({{"command", "study soft-instances"},
-                                                           {"run", s.run.string()},
-                                                           {"frame", s.frame > 0 ? cell(s.frame) : "last"},
-                                                           {"width", cell(s.width)},
-                                                           {"height", cell(s.height)},
-                                                           {"samples_per_pixel", cell(s.samples_per_pixel)}}));
+                                                           {"run", s.image.run.string()},
+                                                           {"frame", s.image.frame > 0 ? cell(s.image.frame) : "last"},
+                                                           {"width", cell(s.image.width)},
+                                                           {"height", cell(s.image.height)},
+                                                           {"samples_per_pixel", cell(s.image.samples_per_pixel)}}));
 }
 
 }  // namespace rice::experiments

@@ -13,17 +13,16 @@
 #include <filesystem>
 #include <vector>
 
+#include "experiments/render/render_command.hpp"
+
 namespace rice::experiments {
 
 struct SoftInstanceStudySettings {
-  std::filesystem::path run;  ///< a soft scene run's output folder
-  int frame = 0;              ///< 0: its last
-  int width = 320, height = 240, samples_per_pixel = 16;
+  RunFrameImage image;
   std::vector<double> tolerances{0.0, 2e-6, 5e-6, 2e-5, 1e-4, 1.0};  ///< [m]; 0 is the reference and always run
 };
 
-/// Throws std::invalid_argument for a missing run folder, sizes that are not positive or a
-/// tolerance below 0.
+/// Throws std::invalid_argument for a bad image (validate(RunFrameImage)) or a tolerance below 0.
 void validate(const SoftInstanceStudySettings& settings);
 
 void soft_instance_study_command(const SoftInstanceStudySettings& settings, const std::filesystem::path& folder);
