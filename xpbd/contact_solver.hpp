@@ -77,6 +77,8 @@ class ContactSolver {
   void end_substep(bool end_of_interval);
 
   const ContactStatistics& statistics() const { return statistics_; }
+  /// Whether the last broad phase found no body pair that may touch.
+  bool no_candidates() const { return body_pairs_.empty(); }
 
   /// Vertex block descent: contacts of soft bodies' spheres with each other and with colliders,
   /// their friction, and compliant bonds between soft bodies become terms of each particle's

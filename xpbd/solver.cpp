@@ -102,6 +102,7 @@ void Solver::step() {
   }
   const int broad_phase_every =
       std::max(1, static_cast<int>(std::floor(model_.contact.broad_phase_interval / h * (1.0 + 1e-9))));
+  bool idle = false;  // the last substep ran with every body asleep and nothing to touch
   for (substep_ = 0; substep_ < settings_.substeps; ++substep_) {
     if (contacts_ && substep_ % broad_phase_every == 0) {
       auto clock = std::chrono::steady_clock::now();
@@ -111,7 +112,13 @@ void Solver::step() {
       mark_sleeping();  // the broad phase may wake bodies; a body may also start asleep
       lap(timings_.sleeping, clock);
     }
+    // With every body asleep and no body pair in reach, a substep moves nothing; the first
+    // clears the contacts' states and the rest repeat it, so they are skipped (a sleeping
+    // onigiri took 0.09 s a frame for 480 of them, 2% of its run).
+    const bool quiet = contacts_ && all_asleep_ && contacts_->no_candidates();
+    if (quiet && idle) continue;
     substep(h, (substep_ + 1) % broad_phase_every == 0 || substep_ + 1 == settings_.substeps);
+    idle = quiet;
   }
   if (settings_.diagnostics) diagnostics_ = measure(h);
   if (model_.sleep.enabled) {
@@ -124,6 +131,7 @@ void Solver::step() {
 }
 
 void Solver::substep(double h, bool end_of_interval) {
+  ++timings_.substeps;
   x_previous_ = model_.particles.x;
   predict(h);
   lambda_distance_.assign(model_.distances.size(), 0.0);
@@ -231,6 +239,11 @@ void Solver::mark_sleeping() {
     else
       std::fill_n(asleep_particle_.begin() + body.first_particle, body.particle_count, 1);
   }
+  all_asleep_ = true;
+  for (int i = 0; i < model_.particles.size() && all_asleep_; ++i)
+    all_asleep_ = asleep_particle_[i] || model_.particles.w[i] == 0.0;
+  for (size_t r = 0; r < model_.rigid_bodies.size() && all_asleep_; ++r)
+    all_asleep_ = asleep_rigid_[r] || model_.rigid_bodies[r].inverse_mass == 0.0;
 }
 
 template <class Project>

@@ -104,6 +104,7 @@ struct SolverTimings {
   double narrow_phase = 0.0;  ///< contacts from candidates, each substep
   double sleeping = 0.0;      ///< sleep bookkeeping
   double total = 0.0;
+  long substeps = 0;  ///< substeps solved (those of a step where all sleeps are skipped)
   double solve() const { return total - broad_phase - narrow_phase - sleeping; }
 };
 
@@ -173,6 +174,7 @@ class Solver {
   Positions y_;                              ///< Method::kVbd: the substep's inertial prediction
   Positions v_previous_;                     ///< Method::kVbd: velocities at the last substep's start
   std::vector<char> asleep_particle_, asleep_rigid_;
+  bool all_asleep_ = false;  ///< every particle and rigid body that can move is asleep (mark_sleeping)
   SolverTimings timings_;
   Coloring coloring_distance_, coloring_volume_, coloring_neo_hookean_;
   /// A soft body's tets, [first, last) in model.neo_hookean, and its first particle.

@@ -75,9 +75,12 @@ TEST_P(GrainContact, FallsAsleepOnAColliderAndStaysAsleep) {
   for (; steps < 60 && !model.bodies[grain].asleep; ++steps) solver.step();
   EXPECT_TRUE(model.bodies[grain].asleep) << "awake after " << steps << " frames";
   const Vec3 asleep_at = body_centre(model, grain);
+  const long substeps = solver.timings().substeps;
   for (int k = 0; k < 30; ++k) solver.step();
   EXPECT_TRUE(model.bodies[grain].asleep);
   EXPECT_EQ(body_centre(model, grain), asleep_at);
+  // With nothing awake and nothing in reach, a step solves its first substep only.
+  EXPECT_EQ(solver.timings().substeps - substeps, 30);
 }
 
 /// Gravity tilted by θ about y is a plane tilted by θ: the grain sits on z = 0 and is pulled
