@@ -209,6 +209,26 @@ std::optional<ShadingPoint> RenderScene::intersect(const Ray& ray) const {
   return shading_point(ray, hit.ray.tfar, hit.hit.instID[0], hit.hit.primID, hit.hit.u, hit.hit.v);
 }
 
+std::optional<ShadingPoint> RenderScene::intersect_instance(const Ray& ray, int instance) const {
+  if (!committed_) throw std::logic_error("RenderScene: intersect before commit");
+  const Instance& i = instances_.at(instance);
+  // The ray in the prototype's frame, x = L⁻¹(x_world − t): the direction is not normalised,
+  // so the ray parameter, and with it the hit's t, is the world ray's.
+  const Eigen::Matrix3f inverse = i.linear.inverse();
+  Ray local = ray;
+  local.origin = inverse * (ray.origin - i.translation);
+  local.direction = inverse * ray.direction;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit hit;
+  hit.ray = embree_ray(local);
+  hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  hit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(prototypes_[i.prototype]->scene, &context, &hit);
+  if (hit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  return shading_point(ray, hit.ray.tfar, static_cast<unsigned>(instance), hit.hit.primID, hit.hit.u, hit.hit.v);
+}
+
 void RenderScene::intersect_coherent(const std::vector<Ray>& rays, std::vector<std::optional<ShadingPoint>>& hits) const {
   if (!committed_) throw std::logic_error("RenderScene: intersect before commit");
   thread_local std::vector<RTCRayHit> batch;

@@ -66,6 +66,9 @@ class RenderScene {
   /// The first hits of many rays at once, through Embree's stream interface told they are
   /// coherent (a pixel's camera rays): the same answers as intersect, faster.
   void intersect_coherent(const std::vector<Ray>& rays, std::vector<std::optional<ShadingPoint>>& hits) const;
+  /// The first hit of the ray on one instance alone, the others ignored: a path inside a
+  /// grain meets only that grain's surface (grains of a pile may overlap a little).
+  std::optional<ShadingPoint> intersect_instance(const Ray& ray, int instance) const;
   /// Whether anything other than instance `ignore` (−1: none) lies along the ray within
   /// [t_min, t_max].
   bool occluded(const Ray& ray, int ignore = -1) const;

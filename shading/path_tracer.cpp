@@ -1,0 +1,276 @@
+// Path tracing through grains, the reference integrator (path_tracer.hpp).
+#include "shading/path_tracer.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "shading/fresnel.hpp"
+#include "shading/renderer.hpp"
+#include "shading/scattering.hpp"
+#include "shading/tangent_frame.hpp"
+
+namespace rice::shading {
+namespace {
+
+using Eigen::Vector3d;
+using Eigen::Vector3f;
+
+struct PathCounters {
+  long long paths = 0, rays = 0, scatterings = 0, walks_cut = 0, walks_lost = 0;
+};
+
+/// What every path of an image reads.
+struct PathContext {
+  const RenderScene& scene;
+  const std::vector<Material>& materials;
+  const std::vector<std::optional<Medium>>& media;
+  const Lights& lights;
+  std::vector<Sun::Sampler> suns;
+  const PathTraceSettings& settings;
+};
+
+/// The sample stream of one path: successive dimension pairs of the pixel sampler.
+struct PathSampler {
+  const PixelSampler& pixel;
+  int index;
+  int next_pair = 2;  // 0: the pixel position, 1: the lens
+  std::pair<double, double> pair() {
+    double a = 0.0, b = 0.0;
+    pixel.pair(index, next_pair++, a, b);
+    return {a, b};
+  }
+};
+
+const Medium* medium_of(const PathContext& c, int material) {
+  return material < static_cast<int>(c.media.size()) && c.media[material] ? &*c.media[material] : nullptr;
+}
+
+/// Radiance of the suns' discs seen along d (each uniform, L = E / (π sin²α)).
+Color sun_discs(const PathContext& c, const Vector3f& d) {
+  Color L = Color::Zero();
+  for (std::size_t k = 0; k < c.suns.size(); ++k) {
+    const Sun::Sampler& s = c.suns[k];
+    if (1.0 - s.w.dot(d.cast<double>()) > s.one_minus_cos_max) continue;
+    const double solid_angle = 2.0 * std::numbers::pi * s.one_minus_cos_max;
+    L += s.weight / static_cast<float>(solid_angle);  // weight = L · solid angle (pdf uniform)
+  }
+  return L;
+}
+
+/// A ray leaving a surface point along d, offset to the side d goes.
+Ray leaving(const RenderScene& scene, const Vector3f& p, const Vector3f& ng, const Vector3f& d) {
+  const float offset = scene.ray_offset();
+  return {p + (ng.dot(d) >= 0.0f ? offset : -offset) * ng, d};
+}
+
+/// Direct light at a Lambertian point (normal n facing the path, albedo A): suns and quads by
+/// shadow rays, f = A/π, each light one sample.
+Color direct_light(const PathContext& c, const ShadingPoint& hit, const Vector3f& n, const Color& albedo,
+                   PathSampler& sampler, PathCounters& counters) {
+  Color L = Color::Zero();
+  const auto add = [&](const LightSample& l) {
+    const float cos_i = n.dot(l.direction);
+    if (cos_i <= 0.0f || (l.weight <= 0.0f).all()) return;
+    Ray shadow = leaving(c.scene, hit.position, n, l.direction);
+    shadow.t_max = l.distance * (1.0f - 1e-4f);
+    ++counters.rays;
+    if (!c.scene.occluded(shadow)) L += albedo * l.weight * (cos_i / std::numbers::pi_v<float>);
+  };
+  for (const Sun::Sampler& sun : c.suns) {
+    const auto [a, b] = sampler.pair();
+    add(sun.sample(a, b));
+  }
+  for (const QuadLight& quad : c.lights.quads) {
+    const auto [a, b] = sampler.pair();
+    add(quad.sample(hit.position, a, b));
+  }
+  return L;
+}
+
+/// A cosine-weighted direction about unit n.
+Vector3f cosine_direction(const Vector3f& n, double a, double b) {
+  const double r = std::sqrt(a), phi = 2.0 * std::numbers::pi * b;
+  const auto [t, s] = tangent_frame(n);
+  const float z = static_cast<float>(std::sqrt(std::max(0.0, 1.0 - a)));
+  return (static_cast<float>(r * std::cos(phi)) * t + static_cast<float>(r * std::sin(phi)) * s + z * n).normalized();
+}
+
+/// The walk inside grain `instance` from its surface point p (outward geometric normal ng),
+/// entering along d: the ray it leaves by, or nothing when the walk ended inside. Multiplies
+/// `throughput` by σ_s/σ_t at each scattering.
+std::optional<Ray> walk(const PathContext& c, int instance, const Medium& m, Vector3f p, const Vector3f& ng, Vector3d d,
+                        Color& throughput, PathSampler& sampler, PathCounters& counters) {
+  const double sigma_t = m.scattering + m.absorption, survival = m.scattering / sigma_t;
+  const float offset = c.scene.ray_offset();
+  Vector3f origin = p - offset * ng;  // just inside
+  for (long long scatterings = 0;;) {
+    ++counters.rays;
+    const std::optional<ShadingPoint> boundary = c.scene.intersect_instance({origin, d.cast<float>()}, instance);
+    if (!boundary) {
+      ++counters.walks_lost;
+      return std::nullopt;
+    }
+    const auto [a, b] = sampler.pair();
+    const double free_path = -std::log1p(-a) / sigma_t;
+    if (free_path < boundary->t) {
+      if (++scatterings > c.settings.max_scatterings) {
+        ++counters.walks_cut;
+        return std::nullopt;
+      }
+      ++counters.scatterings;
+      origin += static_cast<float>(free_path) * d.cast<float>();
+      throughput *= static_cast<float>(survival);
+      const auto [u, unused] = sampler.pair();
+      d = rotate_about(d, sample_henyey_greenstein(m.anisotropy, b), 2.0 * std::numbers::pi * u);
+      continue;
+    }
+    // At the boundary from inside: Fresnel from index η to 1 decides.
+    const Vector3d n = boundary->geometric_normal.cast<double>();  // outward
+    const double cos_inside = d.dot(n);
+    const auto [r, unused] = sampler.pair();
+    if (r < fresnel_reflectance(cos_inside, 1.0 / m.refractive_index)) {
+      d = (d - 2.0 * cos_inside * n).normalized();
+      origin = boundary->position - offset * boundary->geometric_normal;
+      continue;
+    }
+    const Vector3f out = refract(d, n, 1.0 / m.refractive_index).cast<float>();
+    return Ray{boundary->position + offset * boundary->geometric_normal, out};
+  }
+}
+
+/// The radiance one path brings back along the camera ray.
+Color trace(const PathContext& c, Ray ray, PathSampler& sampler, PathCounters& counters) {
+  Color radiance = Color::Zero(), throughput = Color::Constant(1.0f);
+  bool smooth = true;  // the last event was a smooth one (or the camera): a sun seen counts
+  ++counters.paths;
+  for (int depth = 0; depth < c.settings.max_depth; ++depth) {
+    ++counters.rays;
+    const std::optional<ShadingPoint> hit = c.scene.intersect(ray);
+    if (!hit) {
+      radiance += throughput * (c.lights.environment.radiance(ray.direction) +
+                                (smooth ? sun_discs(c, ray.direction) : Color::Zero()));
+      break;
+    }
+    const Vector3f ng = hit->geometric_normal;
+    const Medium* medium = medium_of(c, hit->material);
+    if (medium && ray.direction.dot(ng) > 0.0f) {
+      // Leaving a grain the path was not walking in: it started inside an overlapping one.
+      // Pass through.
+      ray = leaving(c.scene, hit->position, ng, ray.direction);
+      continue;
+    }
+    if (medium) {
+      const Vector3d d = ray.direction.cast<double>(), n = ng.cast<double>();
+      const double cos_outside = -d.dot(n);
+      const auto [a, unused] = sampler.pair();
+      smooth = true;
+      if (a < fresnel_reflectance(cos_outside, medium->refractive_index)) {
+        ray = leaving(c.scene, hit->position, ng, (d + 2.0 * cos_outside * n).normalized().cast<float>());
+      } else {
+        const std::optional<Ray> out = walk(c, hit->instance, *medium, hit->position, ng,
+                                            refract(d, n, medium->refractive_index), throughput, sampler, counters);
+        if (!out) break;
+        ray = *out;
+      }
+    } else {
+      const Vector3f n = hit->shading_normal.dot(ray.direction) < 0.0f ? hit->shading_normal : Vector3f(-hit->shading_normal);
+      const Vector3f n_geometric = ng.dot(ray.direction) < 0.0f ? ng : Vector3f(-ng);
+      const Color albedo = c.materials[hit->material].albedo;
+      radiance += throughput * direct_light(c, *hit, n, albedo, sampler, counters);
+      const auto [a, b] = sampler.pair();
+      Vector3f next = cosine_direction(n, a, b);
+      if (next.dot(n_geometric) <= 0.0f) break;  // under the geometric surface: no light comes that way
+      throughput *= albedo;
+      smooth = false;
+      ray = leaving(c.scene, hit->position, n_geometric, next);
+    }
+    if (depth >= 3) {  // Russian roulette on the throughput
+      const float keep = std::min(0.95f, throughput.maxCoeff());
+      const auto [u, unused] = sampler.pair();
+      if (u >= keep) break;
+      throughput /= keep;
+    }
+  }
+  return radiance;
+}
+
+void validate(const std::vector<Material>& materials, const std::vector<std::optional<Medium>>& media,
+              const RenderScene& scene, const PathTraceSettings& s) {
+  if (s.width < 1 || s.height < 1 || s.samples_per_pixel < 1 || s.max_depth < 1 || s.max_scatterings < 1)
+    throw std::invalid_argument("path_trace: width, height, samples per pixel, depth and scatterings must be at least 1");
+  if (materials.empty()) throw std::invalid_argument("path_trace: no materials");
+  for (int i = 0; i < scene.instance_count(); ++i) {
+    const int m = scene.material_of(i);
+    if (m < 0 || m >= static_cast<int>(materials.size()))
+      throw std::invalid_argument("path_trace: instance " + std::to_string(i) + " has material " + std::to_string(m) +
+                                  " of " + std::to_string(materials.size()));
+  }
+  for (std::size_t k = 0; k < media.size(); ++k) {
+    if (!media[k]) continue;
+    const Medium& m = *media[k];
+    if (!(m.scattering >= 0.0) || !(m.absorption >= 0.0) || !(m.scattering + m.absorption > 0.0) ||
+        !(std::abs(m.anisotropy) < 1.0) || !(m.refractive_index > 0.0))
+      throw std::invalid_argument("path_trace: medium of material " + std::to_string(k) +
+                                  " needs scattering and absorption >= 0 with a positive sum, |anisotropy| < 1 and "
+                                  "refractive index > 0");
+  }
+}
+
+}  // namespace
+
+Image path_trace(const RenderScene& scene, const std::vector<Material>& materials,
+                 const std::vector<std::optional<Medium>>& media, const Lights& lights, const Camera& camera,
+                 const PathTraceSettings& settings, PathTraceStats* stats,
+                 const std::function<void(int, int)>& progress, const std::function<bool()>& cancelled) {
+  validate(materials, media, scene, settings);
+  const auto start = std::chrono::steady_clock::now();
+  PathContext context{scene, materials, media, lights, {}, settings};
+  for (const Sun& sun : lights.suns) context.suns.push_back(sun.sampler());
+  Image image(settings.width, settings.height);
+  const Camera::Frame frame = camera.frame(static_cast<double>(settings.width) / settings.height);
+  const int tiles_x = (settings.width + kTileSize - 1) / kTileSize;
+  const int tiles = ((settings.height + kTileSize - 1) / kTileSize) * tiles_x;
+  std::atomic<int> done = 0;
+  std::atomic<long long> paths = 0, rays = 0, scatterings = 0, walks_cut = 0, walks_lost = 0;
+  tbb::parallel_for(0, tiles, [&](int tile) {
+    if (cancelled && cancelled()) return;
+    PathCounters counters;
+    const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
+    for (int y = y0; y < std::min(y0 + kTileSize, settings.height); ++y) {
+      for (int x = x0; x < std::min(x0 + kTileSize, settings.width); ++x) {
+        const PixelSampler pixel(settings.sampler, settings.seed, x, y, settings.samples_per_pixel);
+        Color sum = Color::Zero();
+        for (int i = 0; i < settings.samples_per_pixel; ++i) {
+          double px = 0.0, py = 0.0, la = 0.0, lb = 0.0;
+          pixel.pair(i, 0, px, py);
+          pixel.pair(i, 1, la, lb);
+          const CameraRay cr = frame.ray((x + px) / settings.width, (y + py) / settings.height, la, lb);
+          PathSampler sampler{pixel, i};
+          sum += trace(context, {cr.origin, cr.direction}, sampler, counters);
+        }
+        image.at(x, y) = sum / static_cast<float>(settings.samples_per_pixel);
+      }
+    }
+    paths += counters.paths;
+    rays += counters.rays;
+    scatterings += counters.scatterings;
+    walks_cut += counters.walks_cut;
+    walks_lost += counters.walks_lost;
+    const int finished = ++done;
+    if (progress) progress(finished, tiles);
+  });
+  if (stats) {
+    *stats = {paths, rays, scatterings, walks_cut, walks_lost,
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+  }
+  return image;
+}
+
+}  // namespace rice::shading

@@ -1,0 +1,77 @@
+// The reference integrator: unidirectional path tracing that follows light through everything
+// the scene holds, the ground truth for a given set of optics (the fast models are measured
+// against it; issue 24, part 1).
+//
+// A path starts at the camera. At a rice grain (a material with a medium) it meets a smooth
+// dielectric boundary of relative index η: it reflects with the Fresnel reflectance F(θ) and
+// otherwise refracts in (Snell). Inside it random-walks as random_walk.hpp does (exponential
+// free paths in σ_t = σ_s + σ_a, Henyey–Greenstein scattering, weight σ_s/σ_t a scattering),
+// meeting only its own grain's surface (RenderScene::intersect_instance), where Fresnel again
+// decides between internal reflection and leaving. Out of the grain it goes on to other
+// grains, the bowl, the ground and the sky. At other surfaces (diffuse, glazed and a rice
+// material without a medium are taken as Lambertian of their albedo) it gathers the suns and
+// quad lights by shadow rays and bounces in a cosine-weighted direction.
+//
+// What light reaches a path:
+//  - the environment, whenever the path leaves the scene;
+//  - a sun, through a shadow ray from a diffuse surface, or when a path leaves the scene inside
+//    its cone right after a smooth event (a reflection or refraction at a grain): only those
+//    paths can reach light that passes through grains. With the real sun's 0.27° that is
+//    rare, so a reference lit by a sun is noisy where light crosses grains; a wider sun or the
+//    sky converges far sooner;
+//  - a quad light, through shadow rays from diffuse surfaces only (quads are not geometry
+//    rays can hit): light from a quad through a grain is missing. Use the sky or suns for a
+//    reference of grains.
+// Paths end by Russian roulette on their throughput after three surface events, and at
+// `max_depth` surface events; a walk inside a grain ends after `max_scatterings` (that light
+// is lost: stats count them).
+//
+// Every random number is the pixel sampler's (sampler.hpp), dimension pairs in the order the
+// path uses them, so an image depends only on the seed, never on the thread count; tiles of
+// kTileSize² pixels as in renderer.hpp. Written by hand: Mitsuba and pbrt are not packaged for
+// Debian, and Embree only answers ray queries.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "shading/camera.hpp"
+#include "shading/image.hpp"
+#include "shading/lights.hpp"
+#include "shading/material.hpp"
+#include "shading/random_walk.hpp"
+#include "shading/render_scene.hpp"
+#include "shading/sampler.hpp"
+
+namespace rice::shading {
+
+struct PathTraceSettings {
+  int width = 640, height = 480;
+  int samples_per_pixel = 64;
+  SamplerKind sampler = SamplerKind::kSobol;
+  std::uint64_t seed = 1;
+  int max_depth = 64;                ///< surface events (reflections, refractions, bounces) per path
+  long long max_scatterings = 100'000;  ///< scatterings of one walk inside a grain
+};
+
+struct PathTraceStats {
+  long long paths = 0, rays = 0, scatterings = 0;
+  long long walks_cut = 0;  ///< walks ended at max_scatterings
+  long long walks_lost = 0;  ///< walks whose ray found no surface of their grain (an open mesh)
+  double seconds = 0.0;
+};
+
+/// Renders with path tracing. `media[m]` is the medium inside material m's surfaces (a rice
+/// grain) or empty (a surface); `media` may be shorter than `materials` (the rest are
+/// surfaces). `progress` and `cancelled` as in renderer.hpp. Throws std::invalid_argument for
+/// sizes, sample counts or depths below 1, an instance's material outside `materials`, or a
+/// medium with negative coefficients, σ_t = 0, |g| ≥ 1 or η ≤ 0.
+Image path_trace(const RenderScene& scene, const std::vector<Material>& materials,
+                 const std::vector<std::optional<Medium>>& media, const Lights& lights, const Camera& camera,
+                 const PathTraceSettings& settings, PathTraceStats* stats = nullptr,
+                 const std::function<void(int done, int total)>& progress = {},
+                 const std::function<bool()>& cancelled = {});
+
+}  // namespace rice::shading

@@ -1,0 +1,211 @@
+// The reference integrator (shading/path_tracer.hpp) against known answers, in the style of
+// pbrt's and Mitsuba's tests: the furnace (non-absorbing grains in a uniform sky return the
+// sky), a convex Lambertian body returns its albedo times the sky, a sun on a plane, noise that
+// falls as 1/√N, the same image on any thread count; and the one-instance ray query the walks
+// inside grains use.
+#include "shading/path_tracer.hpp"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "tests/shading/test_meshes.hpp"
+
+namespace rice::shading {
+namespace {
+
+constexpr double kSphereRadius = 1e-3;  // a grain-sized sphere [m]
+
+/// Adds a sphere of radius kSphereRadius at `centre` with `material`.
+void add_grain_sphere(RenderScene& scene, int prototype, const Eigen::Vector3d& centre, int material) {
+  scene.add_instance(prototype, Eigen::Translation3d(centre) * Eigen::Scaling(kSphereRadius), material);
+}
+
+Camera camera_above(double height, double fov) {
+  Camera c;
+  c.position = {0, 0, height};
+  c.target = {0, 0, 0};
+  c.up = {0, 1, 0};
+  c.vertical_fov_degrees = fov;
+  return c;
+}
+
+/// Three grain-sized spheres in a row along x, 2.5 radii apart, seen from above.
+struct ThreeSpheres {
+  RenderScene scene;
+  ThreeSpheres(int material = 0) {
+    const auto mesh = test_support::icosphere(3);
+    const int prototype = scene.add_prototype(mesh.V, mesh.F);
+    for (const int k : {-1, 0, 1}) add_grain_sphere(scene, prototype, Eigen::Vector3d(2.5 * kSphereRadius * k, 0, 0), material);
+    scene.commit();
+  }
+};
+
+Lights sky_of(float radiance) {
+  Lights lights;
+  lights.environment.constant = Color::Constant(radiance);
+  return lights;
+}
+
+double mean_of(const Image& image) { return mean_radiance(image); }
+
+// A grain that scatters without absorbing, in a sky of radiance 1, sends every path back to the
+// sky: the image is 1 everywhere, within noise (the Fresnel boundary and the walk only reorder
+// where light goes).
+TEST(PathTracer, FurnaceNonAbsorbingGrainsReturnTheSky) {
+  ThreeSpheres spheres;
+  const std::vector<Material> materials = {{.kind = MaterialKind::kRice}};
+  const std::vector<std::optional<Medium>> media = {Medium{4000.0, 0.0, 0.3, 1.33}};
+  PathTraceStats stats;
+  const Image image = path_trace(spheres.scene, materials, media, sky_of(1.0f), camera_above(0.02, 25.0),
+                                 {.width = 24, .height = 16, .samples_per_pixel = 64, .seed = 2}, &stats);
+  EXPECT_NEAR(mean_of(image), 1.0, 0.01);
+  for (const Color& pixel : image.pixels) EXPECT_NEAR(pixel.mean(), 1.0, 0.15);
+  EXPECT_GT(stats.scatterings, stats.paths / 10);  // the walks happened
+  EXPECT_EQ(stats.walks_lost, 0);
+  EXPECT_EQ(stats.walks_cut, 0);
+}
+
+// An absorbing grain is darker than the sky, and darker the more it absorbs.
+TEST(PathTracer, AbsorptionDarkensTheGrain) {
+  ThreeSpheres spheres;
+  const std::vector<Material> materials = {{.kind = MaterialKind::kRice}};
+  const auto centre = [&](double absorption) {
+    const std::vector<std::optional<Medium>> media = {Medium{4000.0, absorption, 0.0, 1.33}};
+    const Image image = path_trace(spheres.scene, materials, media, sky_of(1.0f), camera_above(0.02, 3.0),
+                                   {.width = 8, .height = 8, .samples_per_pixel = 256});
+    return mean_of(image);  // the middle sphere fills the view (0.5 mm of its 1 mm radius)
+  };
+  const double clear = centre(0.0), some = centre(100.0), more = centre(1000.0);
+  EXPECT_NEAR(clear, 1.0, 0.02);
+  EXPECT_LT(some, clear - 0.05);
+  EXPECT_LT(more, some - 0.05);
+}
+
+// Against the random walk in an exact sphere (random_walk.hpp): a sphere in a uniform sky of
+// radiance L sends out a·L on average over its silhouette, from any direction, where a is the
+// share of a beam's power that comes back out (reflected at the surface, scattered out, or
+// through without scattering), the same for every beam by symmetry. The silhouette's share of
+// the image comes from the same view with the sphere black.
+TEST(PathTracer, ASphereSendsBackThePowerTheRandomWalkLetsOut) {
+  const Medium medium{4000.0, 100.0, 0.0, 1.33};
+  const ExitanceProfile walk = sphere_exitance(medium, kSphereRadius, {.photons = 400'000});
+  const double a = (1.0 - walk.entered) + walk.escaped + walk.ballistic;
+  RenderScene scene;
+  const auto mesh = test_support::icosphere(5);
+  add_grain_sphere(scene, scene.add_prototype(mesh.V, mesh.F), Eigen::Vector3d::Zero(), 0);
+  scene.commit();
+  const auto image_mean = [&](const Material& material, const std::vector<std::optional<Medium>>& media) {
+    return mean_of(path_trace(scene, {material}, media, sky_of(1.0f), camera_above(0.02, 7.0),
+                              {.width = 32, .height = 32, .samples_per_pixel = 256}));
+  };
+  const double grain = image_mean({.kind = MaterialKind::kRice}, {medium});
+  const double black = image_mean({.kind = MaterialKind::kDiffuse, .albedo = Color::Zero()}, {});
+  const double silhouette = 1.0 - black;  // its share of the image, times L = 1
+  EXPECT_NEAR((grain - black) / silhouette, a, 0.01);
+  RecordProperty("walk_a", std::to_string(a));
+  RecordProperty("path_traced_a", std::to_string((grain - black) / silhouette));
+}
+
+// A convex Lambertian body in a uniform sky reflects its albedo times the sky (light it sends
+// on leaves it; pbrt's furnace for a diffuse surface).
+TEST(PathTracer, ConvexLambertianBodyReflectsItsAlbedo) {
+  ThreeSpheres spheres;
+  const std::vector<Material> materials = {{.kind = MaterialKind::kDiffuse, .albedo = Color::Constant(0.5f)}};
+  const Image image = path_trace(spheres.scene, materials, {}, sky_of(1.0f), camera_above(0.02, 3.0),
+                                 {.width = 8, .height = 8, .samples_per_pixel = 256});
+  EXPECT_NEAR(mean_of(image), 0.5, 0.01);
+}
+
+// A Lambertian plane under a sun of irradiance π at 60° from the zenith: L = ρ cos 60° (the
+// shadow ray's estimate; the sky is black).
+TEST(PathTracer, LambertianPlaneUnderTheSun) {
+  RenderScene scene;
+  test_support::TestMesh square{MeshVertices(4, 3), MeshTriangles(2, 3)};
+  square.V << -1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0;
+  square.F << 0, 1, 2, 0, 2, 3;
+  scene.add_instance(scene.add_prototype(square.V, square.F), Eigen::Affine3d::Identity(), 0);
+  scene.commit();
+  Lights lights;
+  const double theta = std::numbers::pi / 3.0;
+  lights.suns.push_back({.direction = Eigen::Vector3f(std::sin(theta), 0.0, std::cos(theta)),
+                         .irradiance = Color::Constant(std::numbers::pi_v<float>)});
+  const std::vector<Material> materials = {{.kind = MaterialKind::kDiffuse, .albedo = Color::Constant(0.6f)}};
+  const Image image = path_trace(scene, materials, {}, lights, camera_above(1.0, 20.0),
+                                 {.width = 8, .height = 8, .samples_per_pixel = 16});
+  EXPECT_NEAR(mean_of(image), 0.6 * std::cos(theta), 0.6 * 0.005);
+}
+
+// With independent samples, the error of a pixel against a converged image falls as 1/√N:
+// four times the samples halve it.
+TEST(PathTracer, NoiseFallsAsOneOverTheRootOfTheSamples) {
+  ThreeSpheres spheres;
+  const std::vector<Material> materials = {{.kind = MaterialKind::kRice}};
+  const std::vector<std::optional<Medium>> media = {Medium{4000.0, 30.0, 0.0, 1.33}};
+  const Lights lights = sky_of(1.0f);
+  const auto render_at = [&](int spp, std::uint64_t seed) {
+    return path_trace(spheres.scene, materials, media, lights, camera_above(0.02, 10.0),
+                      {.width = 12, .height = 8, .samples_per_pixel = spp, .sampler = SamplerKind::kIndependent,
+                       .seed = seed});
+  };
+  const Image converged = render_at(4096, 99);
+  const double coarse = rms_difference(render_at(32, 1), converged);
+  const double fine = rms_difference(render_at(128, 1), converged);
+  EXPECT_NEAR(coarse / fine, 2.0, 0.4);
+}
+
+TEST(PathTracer, SameSeedSameImageOnAnyThreadCount) {
+  ThreeSpheres spheres;
+  const std::vector<Material> materials = {{.kind = MaterialKind::kRice}};
+  const std::vector<std::optional<Medium>> media = {Medium{4000.0, 30.0, 0.2, 1.33}};
+  Lights lights = sky_of(1.0f);
+  lights.suns.push_back({});
+  const PathTraceSettings settings{.width = 20, .height = 12, .samples_per_pixel = 8, .seed = 3};
+  Image one;
+  {
+    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    one = path_trace(spheres.scene, materials, media, lights, camera_above(0.02, 25.0), settings);
+  }
+  const Image many = path_trace(spheres.scene, materials, media, lights, camera_above(0.02, 25.0), settings);
+  EXPECT_EQ(rms_difference(one, many), 0.0);
+}
+
+TEST(PathTracer, RefusesBadSettingsAndMedia) {
+  ThreeSpheres spheres;
+  const std::vector<Material> materials = {{.kind = MaterialKind::kRice}};
+  const Lights lights = sky_of(1.0f);
+  const Camera camera = camera_above(0.02, 25.0);
+  EXPECT_THROW(path_trace(spheres.scene, materials, {}, lights, camera, {.width = 0}), std::invalid_argument);
+  EXPECT_THROW(path_trace(spheres.scene, materials, {}, lights, camera, {.max_depth = 0}), std::invalid_argument);
+  EXPECT_THROW(path_trace(spheres.scene, {}, {}, lights, camera, {}), std::invalid_argument);
+  EXPECT_THROW(path_trace(spheres.scene, materials, {Medium{0.0, 0.0, 0.0, 1.3}}, lights, camera, {}),
+               std::invalid_argument);
+  EXPECT_THROW(path_trace(spheres.scene, materials, {Medium{100.0, 0.0, 1.0, 1.3}}, lights, camera, {}),
+               std::invalid_argument);
+}
+
+// A ray from inside one sphere meets that sphere's surface, not the one in front of it.
+TEST(RenderScene, IntersectInstanceSeesOnlyThatInstance) {
+  RenderScene scene;
+  const auto mesh = test_support::icosphere(3);
+  const int prototype = scene.add_prototype(mesh.V, mesh.F);
+  add_grain_sphere(scene, prototype, Eigen::Vector3d::Zero(), 0);
+  add_grain_sphere(scene, prototype, Eigen::Vector3d(0.0, 0.0, 1.5 * kSphereRadius), 0);  // overlapping, above
+  scene.commit();
+  const Ray up{Eigen::Vector3f::Zero(), Eigen::Vector3f::UnitZ()};
+  const auto own = scene.intersect_instance(up, 0);
+  ASSERT_TRUE(own);
+  EXPECT_EQ(own->instance, 0);
+  EXPECT_NEAR(own->t, kSphereRadius, 0.01 * kSphereRadius);  // the icosphere's facets lie within 1% of it
+  EXPECT_GT(own->geometric_normal.z(), 0.9f);    // outward
+  const auto any = scene.intersect(up);
+  ASSERT_TRUE(any);
+  EXPECT_EQ(any->instance, 1);  // the other sphere's lower surface comes first
+  EXPECT_FALSE(scene.intersect_instance({Eigen::Vector3f(0.0f, 0.0f, 0.01f), Eigen::Vector3f::UnitZ()}, 0));
+}
+
+}  // namespace
+}  // namespace rice::shading
