@@ -7,6 +7,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -60,6 +61,28 @@ Color sun_discs(const PathContext& c, const Vector3f& d) {
     if (1.0 - s.w.dot(d.cast<double>()) > s.one_minus_cos_max) continue;
     const double solid_angle = 2.0 * std::numbers::pi * s.one_minus_cos_max;
     L += s.weight / static_cast<float>(solid_angle);  // weight = L · solid angle (pdf uniform)
+  }
+  return L;
+}
+
+/// Radiance of the nearest quad light the ray meets before `t_max` (Möller–Trumbore on the
+/// parallelogram corner + s·edge_u + t·edge_v, s, t in [0, 1]; it emits on the side
+/// edge_v × edge_u points to), or nothing.
+Color quad_seen(const PathContext& c, const Ray& ray, float t_max) {
+  Color L = Color::Zero();
+  float nearest = t_max;
+  for (const QuadLight& quad : c.lights.quads) {
+    const Vector3f p = ray.direction.cross(quad.edge_v);
+    const float det = quad.edge_u.dot(p);
+    if (std::abs(det) < 1e-20f) continue;
+    const Vector3f to_origin = ray.origin - quad.corner;
+    const float s = to_origin.dot(p) / det;
+    const Vector3f q = to_origin.cross(quad.edge_u);
+    const float t = ray.direction.dot(q) / det, distance = quad.edge_v.dot(q) / det;
+    if (s < 0.0f || s > 1.0f || t < 0.0f || t > 1.0f || distance <= 0.0f || distance >= nearest) continue;
+    if (quad.edge_v.cross(quad.edge_u).dot(ray.direction) >= 0.0f) continue;  // its back
+    nearest = distance;
+    L = quad.radiance;
   }
   return L;
 }
@@ -153,6 +176,7 @@ Color trace(const PathContext& c, Ray ray, PathSampler& sampler, PathCounters& c
   for (int depth = 0; depth < c.settings.max_depth; ++depth) {
     ++counters.rays;
     const std::optional<ShadingPoint> hit = c.scene.intersect(ray);
+    if (smooth) radiance += throughput * quad_seen(c, ray, hit ? hit->t : std::numeric_limits<float>::infinity());
     if (!hit) {
       radiance += throughput * (c.lights.environment.radiance(ray.direction) +
                                 (smooth ? sun_discs(c, ray.direction) : Color::Zero()));

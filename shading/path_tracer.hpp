@@ -17,11 +17,10 @@
 //  - a sun, through a shadow ray from a diffuse surface, or when a path leaves the scene inside
 //    its cone right after a smooth event (a reflection or refraction at a grain): only those
 //    paths can reach light that passes through grains. With the real sun's 0.27° that is
-//    rare, so a reference lit by a sun is noisy where light crosses grains; a wider sun or the
-//    sky converges far sooner;
-//  - a quad light, through shadow rays from diffuse surfaces only (quads are not geometry
-//    rays can hit): light from a quad through a grain is missing. Use the sky or suns for a
-//    reference of grains.
+//    rare, so a reference lit by a sun is noisy where light crosses grains; a wider sun, a
+//    quad light or the sky converges far sooner;
+//  - a quad light, through shadow rays from diffuse surfaces, or when a path meets it right
+//    after a smooth event (the camera's ray included);
 // Paths end by Russian roulette on their throughput after three surface events, and at
 // `max_depth` surface events; a walk inside a grain ends after `max_scatterings` (that light
 // is lost: stats count them).

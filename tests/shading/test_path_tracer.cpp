@@ -139,6 +139,24 @@ TEST(PathTracer, LambertianPlaneUnderTheSun) {
   EXPECT_NEAR(mean_of(image), 0.6 * std::cos(theta), 0.6 * 0.005);
 }
 
+// A quad light is seen where it is in front of the camera, from its emitting side only.
+TEST(PathTracer, AQuadLightIsSeenFromItsEmittingSide) {
+  ThreeSpheres spheres;
+  Lights lights;
+  lights.quads.push_back({.corner = Eigen::Vector3f(-1.0f, -1.0f, 0.01f), .edge_u = Eigen::Vector3f(2.0f, 0.0f, 0.0f),
+                          .edge_v = Eigen::Vector3f(0.0f, 2.0f, 0.0f), .radiance = Color::Constant(2.0f)});
+  const std::vector<Material> materials = {{.kind = MaterialKind::kDiffuse, .albedo = Color::Zero()}};
+  const PathTraceSettings settings{.width = 4, .height = 4, .samples_per_pixel = 4};
+  // Looking down at it from above: its back (it emits downwards, edge_v × edge_u = −z).
+  EXPECT_EQ(mean_of(path_trace(spheres.scene, materials, {}, lights, camera_above(0.02, 10.0), settings)), 0.0);
+  Camera up;
+  up.position = {0.0, 0.0, 0.005};
+  up.target = {0.0, 0.0, 1.0};
+  up.up = {0.0, 1.0, 0.0};
+  up.vertical_fov_degrees = 10.0;
+  EXPECT_FLOAT_EQ(mean_of(path_trace(spheres.scene, materials, {}, lights, up, settings)), 2.0f);
+}
+
 // With independent samples, the error of a pixel against a converged image falls as 1/√N:
 // four times the samples halve it.
 TEST(PathTracer, NoiseFallsAsOneOverTheRootOfTheSamples) {
