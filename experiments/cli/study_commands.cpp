@@ -10,6 +10,7 @@
 #include "experiments/studies/grain_substep_study.hpp"
 #include "experiments/studies/oscillator_study.hpp"
 #include "experiments/studies/pour_substep_study.hpp"
+#include "experiments/studies/path_depth_study.hpp"
 #include "experiments/studies/render_study.hpp"
 #include "experiments/studies/scene_convergence_study.hpp"
 #include "experiments/studies/soft_curvature_study.hpp"
@@ -27,6 +28,7 @@ class StudyCommands : public CommandFamily {
     study->require_subcommand(1);
     add_cdrf(study);
     add_render(study);
+    add_path_depth(study);
     add_soft_curvature(study);
     add_soft_instances(study);
     add_pour_substeps(study);
@@ -76,6 +78,31 @@ class StudyCommands : public CommandFamily {
     c->add_option("--seed", s.seed, "random seed")->check(seed_value())->capture_default_str();
     add(c, [this] { experiments::validate(render_); }, [this] { render_study_command(render_, render_out_); });
   }
+
+  void add_path_depth(CLI::App* study) {
+    CLI::App* c = study->add_subcommand(
+        "path-depth", "the reference path tracer: the depth it needs, and the CDRF's error against it");
+    PathDepthSettings& s = path_depth_;
+    c->add_option("--out", path_depth_out_, "output folder")->capture_default_str();
+    c->add_flag("--quick", path_depth_quick_, "a 32 x 24 image of 6 grains at 16 spp, depths 1, 2, 4 (seconds; the rest ignored)");
+    c->add_option("--width", s.width, "pixels")->check(number_in(8, 4096))->capture_default_str();
+    c->add_option("--height", s.height, "pixels")->check(number_in(8, 4096))->capture_default_str();
+    c->add_option("--grains", s.grains, "grains on the plate")->check(number_in(1, 10000))->capture_default_str();
+    c->add_option("--spp", s.samples_per_pixel, "samples per pixel of each path-traced image")
+        ->check(number_in(1, 1 << 20))->capture_default_str();
+    c->add_option("--depths", s.depths, "path depths (surface events) to sweep")->check(number_in(1, 100000))
+        ->capture_default_str();
+    c->add_option("--reference-depth", s.reference_depth, "depth of the reference")->check(number_in(2, 100000))
+        ->capture_default_str();
+    c->add_option("--cdrf-spp", s.cdrf_spp, "samples per pixel of the CDRF image")->check(number_in(1, 1 << 20))
+        ->capture_default_str();
+    c->add_option("--sun-radius", s.sun_radius, "the sun's angular radius [rad]")->capture_default_str();
+    c->add_option("--seed", s.seed, "random seed")->check(seed_value())->capture_default_str();
+    add(c, [this] { experiments::validate(path_depth_settings()); },
+        [this] { path_depth_study_command(path_depth_settings(), path_depth_out_); });
+  }
+
+  PathDepthSettings path_depth_settings() const { return path_depth_quick_ ? PathDepthSettings::quick() : path_depth_; }
 
   /// --run, --frame, --width, --height and --spp of the soft-grain studies.
   static void add_run_frame_options(CLI::App* c, RunFrameImage& image) {
@@ -280,6 +307,9 @@ class StudyCommands : public CommandFamily {
   std::string cdrf_out_ = "out/cdrf";
   RenderStudySettings render_;
   std::string render_out_ = "out/render-study";
+  PathDepthSettings path_depth_;
+  std::string path_depth_out_ = "out/path-depth";
+  bool path_depth_quick_ = false;
   SceneConvergenceSettings scene_convergence_;
   std::string scene_convergence_out_ = "out/scene-convergence";
   bool scene_convergence_quick_ = false;

@@ -5,8 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
-#include <random>
 #include <stdexcept>
 #include <string>
 
@@ -16,11 +14,10 @@
 #include "experiments/io/csv_table.hpp"
 #include "experiments/io/progress.hpp"
 #include "experiments/io/run_info.hpp"
+#include "experiments/render/grain_plate.hpp"
 #include "experiments/render/scene_pieces.hpp"
 #include "shading/renderer.hpp"
 #include "experiments/io/render_images.hpp"
-#include "grains/cultivar.hpp"
-#include "grains/grain_generator.hpp"
 #include "shading/subsurface_bake.hpp"
 
 namespace rice::experiments {
@@ -28,50 +25,10 @@ namespace {
 
 constexpr double kAbsorption = 20.0;  // W [%] of the grains
 
-struct Plate {
-  shading::RenderScene scene;
-  std::vector<int> grain_instances;
-  shading::Lights lights;
-  shading::Camera camera;
-};
-
-// Grains lying flat on a grid, each turned about z and shifted a little, on a grey plate.
-void build_plate(Plate& plate, const RenderStudySettings& settings) {
-  grains::GrainRecipe recipe;
-  recipe.cultivar = grains::cultivar_by_name("japonica");
-  std::vector<int> prototypes;
-  double length = 0.0;
-  for (int k = 0; k < 4; ++k) {
-    const grains::Grain grain = grains::make_grain(recipe, settings.seed * 101 + k, 1.0);
-    prototypes.push_back(add_grain_prototype(plate.scene, grain.render.V, grain.render.F));
-    length = std::max(length, (grain.render.V.colwise().maxCoeff() - grain.render.V.colwise().minCoeff()).maxCoeff());
-  }
-  std::mt19937_64 rng(settings.seed);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const int columns = static_cast<int>(std::ceil(std::sqrt(settings.grains * 1.5)));
-  const double pitch = 1.05 * length;
-  for (int g = 0; g < settings.grains; ++g) {
-    const double x = (g % columns - 0.5 * (columns - 1)) * pitch, y = (g / columns) * 0.6 * pitch;
-    const Eigen::Affine3d place = Eigen::Translation3d(x + 0.05 * pitch * unit(rng), y, 1.1e-3) *
-                                  Eigen::AngleAxisd(0.4 * (unit(rng) - 0.5), Eigen::Vector3d::UnitZ());
-    plate.grain_instances.push_back(plate.scene.add_instance(prototypes[g % prototypes.size()], place, 0));
-  }
-  add_ground(plate.scene, -0.1, -0.1, 0.1, 0.1, 0.0, 1);
-  plate.scene.commit();
-  plate.lights.suns.push_back({.direction = Eigen::Vector3f(0.3f, 0.5f, 0.8f), .irradiance = shading::Color::Constant(3.0f)});
-  plate.lights.environment.constant = shading::Color::Constant(0.3f);
-  const double rows = std::ceil(static_cast<double>(settings.grains) / columns);
-  const Eigen::Vector3d centre(0.0, 0.5 * (rows - 1) * 0.6 * pitch, 1e-3);
-  plate.camera.target = centre;
-  plate.camera.vertical_fov_degrees = 30.0;
-  const double reach = 0.75 * columns * pitch / std::tan(15.0 * std::numbers::pi / 180.0);
-  plate.camera.position = centre + reach * Eigen::Vector3d(0.0, -std::cos(0.7), std::sin(0.7));
-}
-
 /// Renders of the plate at one image size and seed, each with its materials, sampler and
 /// samples; counts them on the study's progress line.
 struct PlateRuns {
-  Plate& plate;  // the bake writes its grains' light into it
+  GrainPlate& plate;  // the bake writes its grains' light into it
   const shading::CdrfTable& cdrf;
   const RenderStudySettings& settings;
   Progress& progress;
@@ -195,8 +152,8 @@ void validate(const RenderStudySettings& s) {
 void render_study_command(const RenderStudySettings& settings, const std::filesystem::path& folder) {
   validate(settings);
   const auto start = std::chrono::steady_clock::now();
-  Plate plate;
-  build_plate(plate, settings);
+  GrainPlate plate;
+  build_grain_plate(plate, settings.grains, settings.seed);
   make_output_folder(folder);
   const shading::CdrfTable cdrf(513, 513);
   const std::vector<shading::Material> materials = {

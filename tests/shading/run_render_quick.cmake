@@ -1,6 +1,6 @@
-# `rice render`, `rice figure 13` and `rice study cdrf` end to end at toy sizes: each writes
-# its files; the same seed renders the same EXR twice; a missing mesh exits non-zero and
-# leaves no folder.
+# `rice render`, `rice figure 13`, `rice study cdrf` and `rice study path-depth` end to end at toy
+# sizes: each writes its files; the same seed renders the same EXR twice; a missing mesh exits
+# non-zero and leaves no folder.
 # Called by CTest with -DRICE=<rice binary> -DOUT=<scratch folder>.
 file(REMOVE_RECURSE "${OUT}")
 function(run)
@@ -31,6 +31,13 @@ run(figure 13 --width 120 --height 40 --spp 2 --photons 2000 --out "${OUT}/figur
 expect_files("${OUT}/figure13" figure13_render.png figure13_reference.exr figure13.csv run_info.txt)
 run(study cdrf --photons 2000 --grain-photons 2000 --radii-mm 1 2 --soak-minutes 15 120 --out "${OUT}/cdrf")
 expect_files("${OUT}/cdrf" cdrf_fit.csv cdrf_profiles.csv grain_profiles.csv run_info.txt)
+run(study path-depth --quick --out "${OUT}/path-depth")
+expect_files("${OUT}/path-depth" path_depth.csv reference.exr reference.png cdrf.png run_info.txt)
+file(STRINGS "${OUT}/path-depth/path_depth.csv" rows)
+list(LENGTH rows count)
+if(NOT count EQUAL 6)  # header, the reference's noise, three depths, the CDRF
+  message(FATAL_ERROR "path_depth.csv has ${count} lines, not 6")
+endif()
 
 execute_process(COMMAND "${RICE}" render --meshes "${OUT}/no_such_mesh.ply" --out "${OUT}/bad"
                 RESULT_VARIABLE result OUTPUT_QUIET ERROR_QUIET)
