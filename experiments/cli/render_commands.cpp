@@ -12,7 +12,7 @@ namespace {
 class RenderCommands : public CommandFamily {
  public:
   explicit RenderCommands(CLI::App& app) {
-    CLI::App* c = app.add_subcommand("render", "grain meshes rendered as cooked rice with the CDRF (PNG and EXR)");
+    CLI::App* c = app.add_subcommand("render", "grain meshes or a scene run's frame rendered as cooked rice, by the CDRF or the reference path tracer (PNG and EXR)");
     add_inputs_and_image(c);
     add_camera(c);
     add_lights(c);
@@ -43,6 +43,11 @@ class RenderCommands : public CommandFamily {
     c->add_option("--sampler", sampler_, "sobol, stratified or independent")
         ->check(CLI::IsMember({"sobol", "stratified", "independent"}))->capture_default_str();
     c->add_option("--seed", render_.render.seed, "random seed")->check(seed_value())->capture_default_str();
+    c->add_option("--integrator", integrator_,
+                  "cdrf (the paper's shading, direct light) or path (the reference: light through and between grains)")
+        ->check(CLI::IsMember({"cdrf", "path"}))->capture_default_str();
+    c->add_option("--max-depth", render_.max_depth, "path: surface events per path")->check(number_in(1, 100000))
+        ->capture_default_str();
     c->add_flag("--no-shadows", no_shadows_, "lights are not blocked");
     c->add_flag("--no-ao", no_ao_, "the sky is not blocked (no ambient occlusion)");
     c->add_flag("--no-ground", no_ground_, "no grey plane under the meshes");
@@ -85,6 +90,7 @@ class RenderCommands : public CommandFamily {
     s.render.sampler = sampler_ == "stratified"    ? shading::SamplerKind::kStratified
                        : sampler_ == "independent" ? shading::SamplerKind::kIndependent
                                                    : shading::SamplerKind::kSobol;
+    s.integrator = integrator_ == "path" ? RenderIntegrator::kPath : RenderIntegrator::kCdrf;
     s.render.shadows = !no_shadows_;
     s.render.ambient_occlusion = !no_ao_;
     s.ground = !no_ground_;
@@ -111,7 +117,7 @@ class RenderCommands : public CommandFamily {
   }
 
   RenderCommandSettings render_;
-  std::string out_ = "out/render", sampler_ = "sobol", sky_image_, run_;
+  std::string out_ = "out/render", sampler_ = "sobol", sky_image_, run_, integrator_ = "cdrf";
   std::vector<std::string> meshes_;
   std::vector<double> eye_, look_at_, area_;
   double fov_ = 30.0, aperture_ = 0.0, focus_ = 0.0;

@@ -18,6 +18,7 @@
 #include "experiments/render/run_frames.hpp"
 #include "experiments/render/scene_pieces.hpp"
 #include "grains/mesh_io.hpp"
+#include "shading/path_tracer.hpp"
 
 namespace rice::experiments {
 namespace {
@@ -134,6 +135,29 @@ struct RenderTotals {
   int own_meshes = 0;  ///< soft grains drawn as their own deformed mesh (the last image's)
 };
 
+/// The image of `scene` by the settings' integrator; its rays into `stats` (the path
+/// tracer's paths as camera rays, its other rays as shadow rays).
+shading::Image integrate(const RenderCommandSettings& s, const RenderInputs& in, const shading::RenderScene& scene,
+                         const shading::Camera& camera, shading::RenderStats& stats) {
+  Progress progress("render: tiles", shading::tile_count(s.render));
+  const auto update = [&](int done, int) { progress.update(done); };
+  shading::Image image;
+  if (s.integrator == RenderIntegrator::kCdrf) {
+    image = shading::render(scene, in.materials, in.lights, camera, in.cdrf, s.render, &stats, update, stop_requested);
+  } else {
+    const shading::RenderSettings& r = s.render;
+    shading::PathTraceStats path;
+    image = shading::path_trace(scene, in.materials, {grain_medium(s.absorption_percent)}, in.lights, camera,
+                                {.width = r.width, .height = r.height, .samples_per_pixel = r.samples_per_pixel,
+                                 .sampler = r.sampler, .seed = r.seed, .max_depth = s.max_depth},
+                                &path, update, stop_requested);
+    stats = {path.paths, path.rays - path.paths, path.seconds};
+  }
+  progress.finish();
+  stop_point();
+  return image;
+}
+
 /// Image k: its scene, the camera (framed on this image when none is set yet), the render,
 /// its PNG and EXR.
 void render_image(const RenderCommandSettings& s, const RenderInputs& in, int k, std::optional<shading::Camera>& camera,
@@ -153,11 +177,7 @@ void render_image(const RenderCommandSettings& s, const RenderInputs& in, int k,
                             aspect);
   }
   shading::RenderStats stats;
-  Progress progress("render: tiles", shading::tile_count(s.render));
-  const shading::Image image = shading::render(scene, in.materials, in.lights, *camera, in.cdrf, s.render, &stats,
-                                               [&](int done, int) { progress.update(done); }, stop_requested);
-  progress.finish();
-  stop_point();
+  const shading::Image image = integrate(s, in, scene, *camera, stats);
   const std::string name = s.every_frame ? in.frames[k].stem().string() : "render";
   write_png(folder / (name + ".png"), tone_map(image, s.exposure));
   write_exr(folder / (name + ".exr"), image);
@@ -186,6 +206,8 @@ void write_render_info(const RenderCommandSettings& s, const RenderInputs& in, i
                                   {"prototypes", cell(totals.prototypes)},
                                   {"soft_instance_tolerance_m", cell(s.soft.instance_tolerance)},
                                   {"soft_grains_own_mesh", cell(totals.own_meshes)},
+                                  {"integrator", s.integrator == RenderIntegrator::kCdrf ? "cdrf" : "path"},
+                                  {"max_depth", s.integrator == RenderIntegrator::kPath ? cell(s.max_depth) : "n/a"},
                                   {"absorption_percent", cell(s.absorption_percent)},
                                   {"sigma0_m", cell(in.materials[0].sigma0)},
                                   {"width", cell(s.render.width)},
@@ -231,6 +253,7 @@ void validate(const RenderCommandSettings& s) {
     throw std::invalid_argument("render: --width and --height must be in [1, 16384]");
   if (s.render.samples_per_pixel < 1 || s.render.samples_per_pixel > 1 << 20)
     throw std::invalid_argument("render: --spp must be in [1, 1048576]");
+  if (s.max_depth < 1 || s.max_depth > 100000) throw std::invalid_argument("render: --max-depth must be in [1, 100000]");
   for (const auto& quad : s.area_lights)
     if (!(quad.edge_u.cross(quad.edge_v).norm() > 0.0f) || !(quad.radiance >= 0.0f).all())
       throw std::invalid_argument("render: an --area-light needs two edges that span an area and a radiance >= 0");

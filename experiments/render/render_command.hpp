@@ -1,9 +1,10 @@
 // `rice render`: renders grain meshes (the PLY/OBJ files of `rice grains`, or any closed
 // meshes) or a frame of a scene run (`rice run`: its rigid grains instanced from its variants,
 // its soft grains' render meshes carried by their simulation meshes, run_frames.hpp, and its
-// chawan, glazed) as cooked rice with the CDRF (paper §4.4),
-// on an optional ground, under a sun and a uniform or image sky, from a camera given on the
-// command line or framed automatically.
+// chawan, glazed) as cooked rice with the CDRF (paper §4.4), or with the reference path
+// tracer (shading/path_tracer.hpp: light through and between the grains, their medium at the
+// water absorption W), on an optional ground, under a sun and a uniform or image sky, from a
+// camera given on the command line or framed automatically.
 // Writes render.png (tone mapped), render.exr (linear) — frame_NNNN.png and .exr for every
 // frame of a run — and run_info.txt (settings, ray counts, rays per second, wall time).
 #pragma once
@@ -21,12 +22,19 @@
 
 namespace rice::experiments {
 
+enum class RenderIntegrator {
+  kCdrf,  ///< the paper's CDRF with direct light (shading/renderer.hpp)
+  kPath,  ///< the reference path tracer (shading/path_tracer.hpp)
+};
+
 struct RenderCommandSettings {
   std::vector<std::filesystem::path> meshes;  ///< files, or folders whose .ply/.obj files are read
   std::filesystem::path run;                  ///< or: the output folder of a scene run
   int frame = 0;                              ///< of the run; 0: its last
   double absorption_percent = 20.0;           ///< water absorption W: σ0 and albedo of the CDRF
   shading::RenderSettings render;
+  RenderIntegrator integrator = RenderIntegrator::kCdrf;
+  int max_depth = 64;  ///< the path tracer's surface events per path
   std::optional<shading::Camera> camera;  ///< none: framed on the meshes' bounds
   double sun_elevation_degrees = 50.0, sun_azimuth_degrees = -30.0;
   double sun_irradiance = 3.0;  ///< [W/m²-like units]; 0: no sun

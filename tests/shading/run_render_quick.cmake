@@ -27,6 +27,13 @@ execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${OUT}/render_a/rende
 if(different)
   message(FATAL_ERROR "same seed, different renders")
 endif()
+run(render --meshes "${OUT}/grains" --side-by-side --integrator path --max-depth 8 --width 24 --height 12 --spp 2
+    --out "${OUT}/render_path")
+expect_files("${OUT}/render_path" render.png render.exr run_info.txt)
+file(STRINGS "${OUT}/render_path/run_info.txt" integrator REGEX "^integrator: path$")
+if(NOT integrator)
+  message(FATAL_ERROR "render --integrator path: run_info.txt does not say integrator: path")
+endif()
 run(figure 13 --width 120 --height 40 --spp 2 --photons 2000 --out "${OUT}/figure13")
 expect_files("${OUT}/figure13" figure13_render.png figure13_reference.exr figure13.csv run_info.txt)
 run(study cdrf --photons 2000 --grain-photons 2000 --radii-mm 1 2 --soak-minutes 15 120 --out "${OUT}/cdrf")
