@@ -19,6 +19,7 @@
 #include "grains/cultivar.hpp"
 #include "grains/grain_generator.hpp"
 #include "grains/water_content.hpp"
+#include "shading/cielab.hpp"
 #include "shading/renderer.hpp"
 #include "shading/subsurface_bake.hpp"
 
@@ -119,11 +120,20 @@ shading::Image render_reference(GrainRow& row, const RowView& view, const Figure
 }
 
 /// Per grain, from the pixels whose centre ray hits it: the mean radiance of its sun side and
-/// its far side in both images, and their RMS difference.
+/// its far side in both images, and their RMS difference; and how visibly the driest and the
+/// wettest grain differ, ΔE*ab of their sides' mean displayed colours (after the tone curve).
 struct GrainRadiance {
   std::vector<double> lit, shaded, reference_lit, reference_shaded, rms, mean;
   double worst_relative = 0.0;  ///< the largest rms / mean
+  double delta_e_lit = 0.0, delta_e_shaded = 0.0, reference_delta_e_lit = 0.0, reference_delta_e_shaded = 0.0;
 };
+
+/// Mean displayed colour (aces_filmic of each channel, linear) of pixels summed into `sum`.
+Eigen::Vector3d displayed(const Eigen::Vector3d& sum, int pixels) { return sum / std::max(1, pixels); }
+
+Eigen::Vector3d tone_curve(const shading::Color& radiance) {
+  return {aces_filmic(radiance[0]), aces_filmic(radiance[1]), aces_filmic(radiance[2])};
+}
 
 GrainRadiance measure_grains(const GrainRow& row, const shading::Image& image, const shading::Image& reference,
                              const RowView& view) {
@@ -134,6 +144,9 @@ GrainRadiance measure_grains(const GrainRow& row, const shading::Image& image, c
   m.shaded = m.reference_lit = m.reference_shaded = m.rms = m.mean = m.lit;
   std::vector<double> squared(n, 0.0);
   std::vector<int> lit_count(n, 0), shaded_count(n, 0);
+  // Displayed colour sums per grain: [side][grain], side 0 lit, 1 shaded; image, reference.
+  std::vector<std::vector<Eigen::Vector3d>> shown(2, std::vector<Eigen::Vector3d>(n, Eigen::Vector3d::Zero()));
+  std::vector<std::vector<Eigen::Vector3d>> shown_reference = shown;
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const shading::CameraRay r = view.camera.ray((x + 0.5) / width, (y + 0.5) / height, 0, 0, aspect);
@@ -144,6 +157,8 @@ GrainRadiance measure_grains(const GrainRow& row, const shading::Image& image, c
       (sunny ? m.lit : m.shaded)[g] += image.at(x, y).mean();
       (sunny ? m.reference_lit : m.reference_shaded)[g] += reference.at(x, y).mean();
       ++(sunny ? lit_count : shaded_count)[g];
+      shown[sunny ? 0 : 1][g] += tone_curve(image.at(x, y));
+      shown_reference[sunny ? 0 : 1][g] += tone_curve(reference.at(x, y));
       squared[g] += (image.at(x, y) - reference.at(x, y)).square().mean();
     }
   for (int i = 0; i < n; ++i) {
@@ -156,6 +171,14 @@ GrainRadiance measure_grains(const GrainRow& row, const shading::Image& image, c
     m.rms[i] = std::sqrt(squared[i] / pixels);
     m.worst_relative = std::max(m.worst_relative, m.rms[i] / m.mean[i]);
   }
+  const int last = n - 1;
+  const auto delta_e = [&](const std::vector<std::vector<Eigen::Vector3d>>& sums, int side, const std::vector<int>& count) {
+    return shading::delta_e76(displayed(sums[side][0], count[0]), displayed(sums[side][last], count[last]));
+  };
+  m.delta_e_lit = delta_e(shown, 0, lit_count);
+  m.delta_e_shaded = delta_e(shown, 1, shaded_count);
+  m.reference_delta_e_lit = delta_e(shown_reference, 0, lit_count);
+  m.reference_delta_e_shaded = delta_e(shown_reference, 1, shaded_count);
   return m;
 }
 
@@ -256,12 +279,19 @@ void figure13_command(const Figure13Settings& settings, const std::filesystem::p
                                   {"reference_bake_s", cell(bake_stats.seconds)},
                                   {"reference_render_s", cell(reference_stats.seconds)},
                                   {"worst_relative_rms_difference", cell(m.worst_relative)},
+                                  {"delta_e_driest_wettest_lit", cell(m.delta_e_lit)},
+                                  {"delta_e_driest_wettest_shaded", cell(m.delta_e_shaded)},
+                                  {"reference_delta_e_driest_wettest_lit", cell(m.reference_delta_e_lit)},
+                                  {"reference_delta_e_driest_wettest_shaded", cell(m.reference_delta_e_shaded)},
                                   {"wall_s", cell(seconds_since(start))}}));
   std::printf("figure 13: shaded/lit %.3f -> %.3f (CDRF), %.3f -> %.3f (random walk); CDRF %.1f s, reference %.1f s "
               "bake + %.1f s render; worst per-grain RMS difference %.0f%%\n",
               m.shaded.front() / m.lit.front(), m.shaded.back() / m.lit.back(),
               m.reference_shaded.front() / m.reference_lit.front(), m.reference_shaded.back() / m.reference_lit.back(),
               cdrf_stats.seconds, bake_stats.seconds, reference_stats.seconds, 100 * m.worst_relative);
+  std::printf("figure 13: driest against wettest grain, Delta E*ab lit %.1f, shaded %.1f (CDRF); lit %.1f, shaded %.1f "
+              "(random walk)\n",
+              m.delta_e_lit, m.delta_e_shaded, m.reference_delta_e_lit, m.reference_delta_e_shaded);
 }
 
 }  // namespace rice::experiments

@@ -5,7 +5,8 @@
 // baked by photons in its own medium, shading/subsurface_bake.hpp).
 // Writes figure13.png (both rows, labelled), figure13_render.{png,exr} (CDRF),
 // figure13_reference.{png,exr}, figure13.csv (per grain: soak, W, σ0, albedo, mean radiance
-// of its lit and shaded sides in both, their RMS difference) and run_info.txt (times).
+// of its lit and shaded sides in both, their RMS difference) and run_info.txt (times, and the
+// CIELAB ΔE*ab between the driest and the wettest grain's lit and shaded sides as displayed).
 #pragma once
 
 #include <cstdint>

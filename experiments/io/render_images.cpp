@@ -18,13 +18,13 @@
 namespace rice::experiments {
 namespace {
 
-double aces_filmic(double x) { return std::clamp(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0); }
-
 double srgb_encode(double linear) {
   return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
 }
 
 }  // namespace
+
+double aces_filmic(double x) { return std::clamp(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0); }
 
 RgbImage tone_map(const shading::Image& image, double exposure) {
   RgbImage out(image.width, image.height);

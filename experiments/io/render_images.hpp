@@ -9,7 +9,10 @@
 
 namespace rice::experiments {
 
-/// Linear radiance × 2^exposure through the ACES filmic fit (Narkowicz 2015), then sRGB.
+/// The ACES filmic fit (Narkowicz 2015): radiance to a linear display value in [0, 1].
+double aces_filmic(double radiance);
+
+/// Linear radiance × 2^exposure through aces_filmic, then sRGB.
 RgbImage tone_map(const shading::Image& image, double exposure);
 
 /// Linear 32-bit float R, G, B channels, written atomically; throws std::runtime_error.
