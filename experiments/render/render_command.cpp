@@ -14,6 +14,7 @@
 #include "experiments/io/progress.hpp"
 #include "experiments/io/render_images.hpp"
 #include "experiments/io/run_info.hpp"
+#include "experiments/io/video.hpp"
 #include "experiments/render/framing_box.hpp"
 #include "experiments/render/run_frames.hpp"
 #include "experiments/render/scene_pieces.hpp"
@@ -247,6 +248,7 @@ void validate(const RenderCommandSettings& s) {
   if (s.frame < 0) throw std::invalid_argument("render: --frame must be >= 0");
   if (s.every_frame && (s.run.empty() || s.frame > 0))
     throw std::invalid_argument("render: --every-frame renders each frame of a --run, without --frame");
+  if (s.video && !s.every_frame) throw std::invalid_argument("render: --video needs --every-frame");
   if (!(s.absorption_percent >= 0.0 && s.absorption_percent <= 100.0))
     throw std::invalid_argument("render: --absorption must be in [0, 100] %");
   if (s.render.width < 1 || s.render.height < 1 || s.render.width > 16384 || s.render.height > 16384)
@@ -283,6 +285,11 @@ shading::Camera render_command(const RenderCommandSettings& settings, const std:
     progress.update(k + 1);
   }
   progress.finish();
+  if (settings.video) {
+    const std::string first = inputs.frames.back().stem().string();  // frame_NNNN, the run's first
+    encode_video(folder, "frame_%04d.png", std::stoi(first.substr(first.find('_') + 1)), run_fps(settings.run),
+                 "render.mp4");
+  }
   write_render_info(settings, inputs, images, totals, seconds_since(start), folder);
   return *camera;
 }

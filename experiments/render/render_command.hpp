@@ -6,7 +6,8 @@
 // water absorption W), on an optional ground, under a sun and a uniform or image sky, from a
 // camera given on the command line or framed automatically.
 // Writes render.png (tone mapped), render.exr (linear) — frame_NNNN.png and .exr for every
-// frame of a run — and run_info.txt (settings, ray counts, rays per second, wall time).
+// frame of a run, and render.mp4 of them with `video` — and run_info.txt (settings, ray
+// counts, rays per second, wall time).
 #pragma once
 
 #include <filesystem>
@@ -48,6 +49,7 @@ struct RenderCommandSettings {
   /// A run's every frame, into frame_NNNN.png and .exr, with one camera: the given one or the
   /// last frame's framing. The variants' curvature and the CDRF table are made once.
   bool every_frame = false;
+  bool video = false;  ///< with every_frame: the frames also as render.mp4 at the run's frame rate (io/video.hpp)
   SoftGrainDrawing soft;  ///< how a soft run's grains are drawn
 };
 

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
+#include <string>
 #include <stdexcept>
 
 #include "experiments/io/numeric_csv.hpp"
@@ -18,6 +20,13 @@ std::filesystem::path run_frame_path(const std::filesystem::path& run, int frame
   char name[32];
   std::snprintf(name, sizeof name, "frame_%04d.csv", frame);
   return run / "frames" / name;
+}
+
+double run_fps(const std::filesystem::path& run) {
+  std::ifstream info(run / "run_info.txt");
+  for (std::string line; std::getline(info, line);)
+    if (line.starts_with("fps: ")) return std::stod(line.substr(5));
+  return 30.0;
 }
 
 std::vector<std::filesystem::path> run_frames(const std::filesystem::path& run) {

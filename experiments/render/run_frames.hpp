@@ -25,6 +25,9 @@ std::filesystem::path run_frame_path(const std::filesystem::path& run, int frame
 /// The run's frames, in order; throws std::runtime_error when it has none.
 std::vector<std::filesystem::path> run_frames(const std::filesystem::path& run);
 
+/// The run's frame rate, from the `fps:` line of its run_info.txt; 30 when it has none.
+double run_fps(const std::filesystem::path& run);
+
 /// The curvature H a soft grain's render mesh is shaded with.
 enum class SoftCurvature {
   kRest,      ///< its variant's rest curvature, scaled by 1/P: free

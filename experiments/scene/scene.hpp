@@ -133,6 +133,8 @@ struct SceneRender {
   double vertical_fov_degrees = 30.0;
   /// Also every frame, into render_frames/frame_NNNN.png, with the last frame's camera.
   bool every_frame = false;
+  /// Also render_frames/render.mp4 of every frame (implies every_frame).
+  bool video = false;
 };
 
 struct Scene {

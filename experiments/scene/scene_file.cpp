@@ -274,6 +274,7 @@ SceneRender read_render(TomlSection section) {
   r.sky_radiance = section.number("sky_radiance");
   r.ground = section.flag("ground");
   r.every_frame = section.flag("every_frame");
+  r.video = section.flag("video");
   if (section.has("eye_m") || section.has("look_at_m")) {
     r.eye = section.vector3("eye_m");
     r.look_at = section.vector3("look_at_m");

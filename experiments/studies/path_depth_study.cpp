@@ -23,7 +23,7 @@
 namespace rice::experiments {
 namespace {
 
-constexpr double kAbsorption = 20.0;  // W [%] of the grains, as in the render study
+constexpr double kPlateAbsorption = 20.0;  // W [%] of the grains, as in the render study
 
 /// The plate and what its path-traced images share.
 struct DepthRuns {
@@ -99,8 +99,8 @@ void path_depth_study_command(const PathDepthSettings& settings, const std::file
   make_output_folder(folder);
   Progress progress("study path-depth: renders", static_cast<int>(settings.depths.size()) + 3);
   DepthRuns runs{plate, settings,
-                 {rice_material(kAbsorption), {.kind = shading::MaterialKind::kDiffuse, .albedo = shading::Color::Constant(0.5f)}},
-                 {grain_medium(kAbsorption)}, progress};
+                 {rice_material(kPlateAbsorption), {.kind = shading::MaterialKind::kDiffuse, .albedo = shading::Color::Constant(0.5f)}},
+                 {grain_medium(kPlateAbsorption)}, progress};
 
   shading::PathTraceStats stats;
   const shading::Image reference = runs.path_traced(settings.reference_depth, settings.seed, stats);

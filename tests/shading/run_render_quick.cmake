@@ -1,7 +1,7 @@
-# `rice render`, `rice figure 13`, `rice study cdrf` and `rice study path-depth` end to end at toy
-# sizes: each writes its files; the same seed renders the same EXR twice; a missing mesh exits
-# non-zero and leaves no folder.
-# Called by CTest with -DRICE=<rice binary> -DOUT=<scratch folder>.
+# `rice render` (meshes, a run's every frame and its video, the path tracer), `rice figure 13`,
+# `rice study cdrf` and `rice study path-depth` end to end at toy sizes: each writes its files;
+# the same seed renders the same EXR twice; a missing mesh exits non-zero and leaves no folder.
+# Called by CTest with -DRICE=<rice binary> -DOUT=<scratch folder> -DSCENES=<experiments/scenes>.
 file(REMOVE_RECURSE "${OUT}")
 function(run)
   execute_process(COMMAND "${RICE}" ${ARGN} RESULT_VARIABLE result ERROR_VARIABLE error OUTPUT_QUIET)
@@ -33,6 +33,17 @@ expect_files("${OUT}/render_path" render.png render.exr run_info.txt)
 file(STRINGS "${OUT}/render_path/run_info.txt" integrator REGEX "^integrator: path$")
 if(NOT integrator)
   message(FATAL_ERROR "render --integrator path: run_info.txt does not say integrator: path")
+endif()
+# Every frame of a short run, and its video: H.264, yuv420p, one video frame per run frame.
+run(run "${SCENES}/drop.toml" --set grains.count=3 --set solver.frames=4 --set render.width=16 --set render.height=16
+    --set render.samples_per_pixel=1 --out "${OUT}/run")
+run(render --run "${OUT}/run" --every-frame --video --width 32 --height 18 --spp 1 --out "${OUT}/video")
+expect_files("${OUT}/video" frame_0001.png frame_0004.png render.mp4 run_info.txt)
+execute_process(COMMAND ffprobe -v error -select_streams v:0 -count_frames
+                        -show_entries stream=codec_name,pix_fmt,nb_read_frames -of csv=p=0 "${OUT}/video/render.mp4"
+                OUTPUT_VARIABLE probe OUTPUT_STRIP_TRAILING_WHITESPACE RESULT_VARIABLE probed)
+if(NOT probed EQUAL 0 OR NOT probe STREQUAL "h264,yuv420p,4")
+  message(FATAL_ERROR "render.mp4: ffprobe says '${probe}' (exit ${probed}), not h264,yuv420p,4")
 endif()
 run(figure 13 --width 120 --height 40 --spp 2 --photons 2000 --out "${OUT}/figure13")
 expect_files("${OUT}/figure13" figure13_render.png figure13_reference.exr figure13.csv run_info.txt)

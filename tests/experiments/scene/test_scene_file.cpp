@@ -79,6 +79,7 @@ TEST(SceneFile, AnEmptyFileIsTheSceneWithItsDefaults) {
   EXPECT_EQ(r.sky_radiance, dr.sky_radiance);
   EXPECT_EQ(r.ground, dr.ground);
   EXPECT_EQ(r.every_frame, dr.every_frame);
+  EXPECT_EQ(r.video, dr.video);
   EXPECT_EQ(r.vertical_fov_degrees, dr.vertical_fov_degrees);
   EXPECT_FALSE(r.eye);
 }
@@ -314,10 +315,10 @@ TEST(SceneFile, RunWritesTheRunWithItsSceneAndABadSceneWritesNothing) {
   EXPECT_THROW(run_scene_command(chawan, {"grains.count=0"}, out), SceneError);
   EXPECT_FALSE(std::filesystem::exists(out));
   run_scene_command(chawan, {"grains.count=20", "grains.variants=2", "solver.frames=3", "render.width=32",
-                             "render.height=24", "render.samples_per_pixel=1", "render.every_frame=true"},
+                             "render.height=24", "render.samples_per_pixel=1", "render.video=true"},
                     out);
   for (const char* file : {"scene.toml", "stats.csv", "run_info.txt", "grains.csv", "render/render.png",
-                           "render_frames/frame_0001.png", "render_frames/frame_0002.png"})
+                           "render_frames/frame_0001.png", "render_frames/frame_0002.png", "render_frames/render.mp4"})
     EXPECT_TRUE(std::filesystem::exists(out / file)) << file;
   // Every frame through the last one's camera: the last of them is the last frame's image.
   const auto bytes = [](const std::filesystem::path& path) {
