@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -24,6 +25,10 @@ struct RenderScene::Prototype {
   std::vector<Eigen::Vector3f> positions, normals;
   std::vector<float> curvature;  // empty: flat
   std::vector<Eigen::Vector3i> triangles;
+  // Vertex v's triangles are vertex_triangles[first_triangle[v] .. first_triangle[v + 1]),
+  // built by triangles_around at its first call.
+  std::once_flag adjacency;
+  std::vector<int> first_triangle, vertex_triangles;
   ~Prototype() {
     if (scene) rtcReleaseScene(scene);
   }
@@ -107,6 +112,7 @@ int RenderScene::add_instance(int prototype, const Eigen::Affine3d& transform, i
   instance.prototype = prototype;
   instance.material = material;
   instance.linear = L.cast<float>();
+  instance.inverse_linear = L.inverse().cast<float>();
   instance.normal_matrix = (L.inverse().transpose()).cast<float>();
   instance.translation = transform.translation().cast<float>();
   instance.curvature_scale = static_cast<float>(1.0 / scale);
@@ -147,6 +153,37 @@ void RenderScene::set_vertex_values(int instance, std::vector<float> values) {
 
 Eigen::Vector3i RenderScene::triangle(int instance, int primitive) const {
   return prototypes_[instances_.at(instance).prototype]->triangles.at(primitive);
+}
+
+void RenderScene::triangles_around(int instance, int primitive, std::vector<int>& out) const {
+  Prototype& p = *prototypes_[instances_.at(instance).prototype];
+  std::call_once(p.adjacency, [&p] {
+    p.first_triangle.assign(p.positions.size() + 1, 0);
+    for (const Eigen::Vector3i& t : p.triangles)
+      for (int k = 0; k < 3; ++k) ++p.first_triangle[t[k] + 1];
+    for (size_t v = 0; v < p.positions.size(); ++v) p.first_triangle[v + 1] += p.first_triangle[v];
+    p.vertex_triangles.resize(p.first_triangle.back());
+    std::vector<int> next(p.first_triangle.begin(), p.first_triangle.end() - 1);
+    for (size_t f = 0; f < p.triangles.size(); ++f)
+      for (int k = 0; k < 3; ++k) p.vertex_triangles[next[p.triangles[f][k]]++] = static_cast<int>(f);
+  });
+  out.clear();
+  for (int k = 0; k < 3; ++k) {
+    const int v = p.triangles.at(primitive)[k];
+    out.insert(out.end(), p.vertex_triangles.begin() + p.first_triangle[v],
+               p.vertex_triangles.begin() + p.first_triangle[v + 1]);
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+std::array<Eigen::Vector3f, 3> RenderScene::world_triangle(int instance, int primitive) const {
+  const Instance& i = instances_.at(instance);
+  const Prototype& p = *prototypes_[i.prototype];
+  const Eigen::Vector3i& t = p.triangles.at(primitive);
+  std::array<Eigen::Vector3f, 3> corners;
+  for (int k = 0; k < 3; ++k) corners[k] = i.linear * p.positions[t[k]] + i.translation;
+  return corners;
 }
 
 int RenderScene::vertex_count(int instance) const {
@@ -195,17 +232,23 @@ RTCRay embree_ray(const Ray& ray) {
   return r;
 }
 
-}  // namespace
-
-std::optional<ShadingPoint> RenderScene::intersect(const Ray& ray) const {
-  if (!committed_) throw std::logic_error("RenderScene: intersect before commit");
+/// Embree's first hit of `ray` in `scene` (geomID invalid: none).
+RTCRayHit first_hit(RTCScene scene, const Ray& ray) {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit hit;
   hit.ray = embree_ray(ray);
   hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   hit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(embree_->top, &context, &hit);
+  rtcIntersect1(scene, &context, &hit);
+  return hit;
+}
+
+}  // namespace
+
+std::optional<ShadingPoint> RenderScene::intersect(const Ray& ray) const {
+  if (!committed_) throw std::logic_error("RenderScene: intersect before commit");
+  const RTCRayHit hit = first_hit(embree_->top, ray);
   return shading_point(ray, hit.ray.tfar, hit.hit.instID[0], hit.hit.primID, hit.hit.u, hit.hit.v);
 }
 
@@ -214,17 +257,10 @@ std::optional<ShadingPoint> RenderScene::intersect_instance(const Ray& ray, int 
   const Instance& i = instances_.at(instance);
   // The ray in the prototype's frame, x = L⁻¹(x_world − t): the direction is not normalised,
   // so the ray parameter, and with it the hit's t, is the world ray's.
-  const Eigen::Matrix3f inverse = i.linear.inverse();
   Ray local = ray;
-  local.origin = inverse * (ray.origin - i.translation);
-  local.direction = inverse * ray.direction;
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  RTCRayHit hit;
-  hit.ray = embree_ray(local);
-  hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  hit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(prototypes_[i.prototype]->scene, &context, &hit);
+  local.origin = i.inverse_linear * (ray.origin - i.translation);
+  local.direction = i.inverse_linear * ray.direction;
+  const RTCRayHit hit = first_hit(prototypes_[i.prototype]->scene, local);
   if (hit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   return shading_point(ray, hit.ray.tfar, static_cast<unsigned>(instance), hit.hit.primID, hit.hit.u, hit.hit.v);
 }

@@ -8,6 +8,7 @@
 
 #include <Eigen/Geometry>
 
+#include <array>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -82,6 +83,12 @@ class RenderScene {
   void set_vertex_values(int instance, std::vector<float> values);
   /// The prototype's vertex indices of triangle `primitive` of `instance`.
   Eigen::Vector3i triangle(int instance, int primitive) const;
+  /// The triangles of an instance's prototype that share a vertex with triangle `primitive`,
+  /// itself included, into `out` (cleared first). The prototype's vertex-to-triangle index is
+  /// built at the first call, once, on any thread.
+  void triangles_around(int instance, int primitive, std::vector<int>& out) const;
+  /// Triangle `primitive` of `instance` in world coordinates.
+  std::array<Eigen::Vector3f, 3> world_triangle(int instance, int primitive) const;
   /// Vertex count of an instance's prototype.
   int vertex_count(int instance) const;
   /// Each vertex's share of the instance's surface in world units: a third of the area of
@@ -101,7 +108,7 @@ class RenderScene {
   struct Prototype;
   struct Instance {
     int prototype = 0, material = 0;
-    Eigen::Matrix3f linear, normal_matrix;
+    Eigen::Matrix3f linear, inverse_linear, normal_matrix;
     Eigen::Vector3f translation;
     float curvature_scale = 1.0f;
     std::vector<float> vertex_values;  // empty: none

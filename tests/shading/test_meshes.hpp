@@ -1,7 +1,9 @@
 // Analytic test surfaces for the shading suite: an icosphere (a subdivided icosahedron
-// projected onto the unit sphere), scaled into spheres and ellipsoids.
+// projected onto the unit sphere), scaled into spheres and ellipsoids; and the camera the
+// renderer tests look down with.
 #pragma once
 
+#include "shading/camera.hpp"
 #include "shading/curvature.hpp"
 
 #include <map>
@@ -13,6 +15,16 @@ struct TestMesh {
   MeshVertices V;
   MeshTriangles F;
 };
+
+/// A camera at `height` on the z axis looking down at the origin, +y up in the image.
+inline Camera looking_down(double height, double fov_degrees) {
+  Camera c;
+  c.position = {0, 0, height};
+  c.target = {0, 0, 0};
+  c.up = {0, 1, 0};
+  c.vertical_fov_degrees = fov_degrees;
+  return c;
+}
 
 /// Unit icosphere after `subdivisions` 1-to-4 splits: 10·4^s + 2 vertices.
 inline TestMesh icosphere(int subdivisions) {

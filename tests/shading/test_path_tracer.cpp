@@ -24,15 +24,6 @@ void add_grain_sphere(RenderScene& scene, int prototype, const Eigen::Vector3d& 
   scene.add_instance(prototype, Eigen::Translation3d(centre) * Eigen::Scaling(kSphereRadius), material);
 }
 
-Camera camera_above(double height, double fov) {
-  Camera c;
-  c.position = {0, 0, height};
-  c.target = {0, 0, 0};
-  c.up = {0, 1, 0};
-  c.vertical_fov_degrees = fov;
-  return c;
-}
-
 /// Three grain-sized spheres in a row along x, 2.5 radii apart, seen from above.
 struct ThreeSpheres {
   RenderScene scene;
@@ -60,7 +51,7 @@ TEST(PathTracer, FurnaceNonAbsorbingGrainsReturnTheSky) {
   const std::vector<Material> materials = {{.kind = MaterialKind::kRice}};
   const std::vector<std::optional<Medium>> media = {Medium{4000.0, 0.0, 0.3, 1.33}};
   PathTraceStats stats;
-  const Image image = path_trace(spheres.scene, materials, media, sky_of(1.0f), camera_above(0.02, 25.0),
+  const Image image = path_trace(spheres.scene, materials, media, sky_of(1.0f), test_support::looking_down(0.02, 25.0),
                                  {.width = 24, .height = 16, .samples_per_pixel = 64, .seed = 2}, &stats);
   EXPECT_NEAR(mean_of(image), 1.0, 0.01);
   for (const Color& pixel : image.pixels) EXPECT_NEAR(pixel.mean(), 1.0, 0.15);
@@ -75,7 +66,7 @@ TEST(PathTracer, AbsorptionDarkensTheGrain) {
   const std::vector<Material> materials = {{.kind = MaterialKind::kRice}};
   const auto centre = [&](double absorption) {
     const std::vector<std::optional<Medium>> media = {Medium{4000.0, absorption, 0.0, 1.33}};
-    const Image image = path_trace(spheres.scene, materials, media, sky_of(1.0f), camera_above(0.02, 3.0),
+    const Image image = path_trace(spheres.scene, materials, media, sky_of(1.0f), test_support::looking_down(0.02, 3.0),
                                    {.width = 8, .height = 8, .samples_per_pixel = 256});
     return mean_of(image);  // the middle sphere fills the view (0.5 mm of its 1 mm radius)
   };
@@ -99,7 +90,7 @@ TEST(PathTracer, ASphereSendsBackThePowerTheRandomWalkLetsOut) {
   add_grain_sphere(scene, scene.add_prototype(mesh.V, mesh.F), Eigen::Vector3d::Zero(), 0);
   scene.commit();
   const auto image_mean = [&](const Material& material, const std::vector<std::optional<Medium>>& media) {
-    return mean_of(path_trace(scene, {material}, media, sky_of(1.0f), camera_above(0.02, 7.0),
+    return mean_of(path_trace(scene, {material}, media, sky_of(1.0f), test_support::looking_down(0.02, 7.0),
                               {.width = 32, .height = 32, .samples_per_pixel = 256}));
   };
   const double grain = image_mean({.kind = MaterialKind::kRice}, {medium});
@@ -110,12 +101,38 @@ TEST(PathTracer, ASphereSendsBackThePowerTheRandomWalkLetsOut) {
   RecordProperty("path_traced_a", std::to_string((grain - black) / silhouette));
 }
 
+// A sun's light through a grain, gathered at each scattering through the facets that refract
+// it there, against the same light found only by paths that meet the sun's disc (unbiased,
+// and converging here because the sun is wide): the two images agree in the mean within 3%
+// (measured: 1.5% low, within the disc paths' noise; the light that reaches a scattering only
+// after an internal reflection is what the facets leave out). With one facet per scattering
+// and no neighbours it was 15% low.
+TEST(PathTracer, SunlightThroughTheFacetsMatchesPathsThatMeetTheSun) {
+  RenderScene scene;
+  const auto mesh = test_support::icosphere(5);
+  add_grain_sphere(scene, scene.add_prototype(mesh.V, mesh.F), Eigen::Vector3d::Zero(), 0);
+  scene.commit();
+  Lights lights;
+  lights.suns.push_back({.direction = Eigen::Vector3f(0.6f, 0.0f, 0.8f), .angular_radius = 0.15f});
+  const std::vector<Material> materials = {{.kind = MaterialKind::kRice}};
+  const std::vector<std::optional<Medium>> media = {Medium{4000.0, 30.0, 0.0, 1.33}};
+  const auto image_mean = [&](bool through_facets, int spp) {
+    PathTraceSettings settings{.width = 24, .height = 24, .samples_per_pixel = spp, .seed = 5};
+    settings.suns_through_facets = through_facets;
+    return mean_of(path_trace(scene, materials, media, lights, test_support::looking_down(0.02, 7.0), settings));
+  };
+  const double facets = image_mean(true, 256), discs = image_mean(false, 4096);
+  EXPECT_NEAR(facets / discs, 1.0, 0.03);
+  RecordProperty("through_facets", std::to_string(facets));
+  RecordProperty("disc_hits", std::to_string(discs));
+}
+
 // A convex Lambertian body in a uniform sky reflects its albedo times the sky (light it sends
 // on leaves it; pbrt's furnace for a diffuse surface).
 TEST(PathTracer, ConvexLambertianBodyReflectsItsAlbedo) {
   ThreeSpheres spheres;
   const std::vector<Material> materials = {{.kind = MaterialKind::kDiffuse, .albedo = Color::Constant(0.5f)}};
-  const Image image = path_trace(spheres.scene, materials, {}, sky_of(1.0f), camera_above(0.02, 3.0),
+  const Image image = path_trace(spheres.scene, materials, {}, sky_of(1.0f), test_support::looking_down(0.02, 3.0),
                                  {.width = 8, .height = 8, .samples_per_pixel = 256});
   EXPECT_NEAR(mean_of(image), 0.5, 0.01);
 }
@@ -134,7 +151,7 @@ TEST(PathTracer, LambertianPlaneUnderTheSun) {
   lights.suns.push_back({.direction = Eigen::Vector3f(std::sin(theta), 0.0, std::cos(theta)),
                          .irradiance = Color::Constant(std::numbers::pi_v<float>)});
   const std::vector<Material> materials = {{.kind = MaterialKind::kDiffuse, .albedo = Color::Constant(0.6f)}};
-  const Image image = path_trace(scene, materials, {}, lights, camera_above(1.0, 20.0),
+  const Image image = path_trace(scene, materials, {}, lights, test_support::looking_down(1.0, 20.0),
                                  {.width = 8, .height = 8, .samples_per_pixel = 16});
   EXPECT_NEAR(mean_of(image), 0.6 * std::cos(theta), 0.6 * 0.005);
 }
@@ -148,7 +165,7 @@ TEST(PathTracer, AQuadLightIsSeenFromItsEmittingSide) {
   const std::vector<Material> materials = {{.kind = MaterialKind::kDiffuse, .albedo = Color::Zero()}};
   const PathTraceSettings settings{.width = 4, .height = 4, .samples_per_pixel = 4};
   // Looking down at it from above: its back (it emits downwards, edge_v × edge_u = −z).
-  EXPECT_EQ(mean_of(path_trace(spheres.scene, materials, {}, lights, camera_above(0.02, 10.0), settings)), 0.0);
+  EXPECT_EQ(mean_of(path_trace(spheres.scene, materials, {}, lights, test_support::looking_down(0.02, 10.0), settings)), 0.0);
   Camera up;
   up.position = {0.0, 0.0, 0.005};
   up.target = {0.0, 0.0, 1.0};
@@ -165,7 +182,7 @@ TEST(PathTracer, NoiseFallsAsOneOverTheRootOfTheSamples) {
   const std::vector<std::optional<Medium>> media = {Medium{4000.0, 30.0, 0.0, 1.33}};
   const Lights lights = sky_of(1.0f);
   const auto render_at = [&](int spp, std::uint64_t seed) {
-    return path_trace(spheres.scene, materials, media, lights, camera_above(0.02, 10.0),
+    return path_trace(spheres.scene, materials, media, lights, test_support::looking_down(0.02, 10.0),
                       {.width = 12, .height = 8, .samples_per_pixel = spp, .sampler = SamplerKind::kIndependent,
                        .seed = seed});
   };
@@ -185,9 +202,9 @@ TEST(PathTracer, SameSeedSameImageOnAnyThreadCount) {
   Image one;
   {
     tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
-    one = path_trace(spheres.scene, materials, media, lights, camera_above(0.02, 25.0), settings);
+    one = path_trace(spheres.scene, materials, media, lights, test_support::looking_down(0.02, 25.0), settings);
   }
-  const Image many = path_trace(spheres.scene, materials, media, lights, camera_above(0.02, 25.0), settings);
+  const Image many = path_trace(spheres.scene, materials, media, lights, test_support::looking_down(0.02, 25.0), settings);
   EXPECT_EQ(rms_difference(one, many), 0.0);
 }
 
@@ -195,7 +212,7 @@ TEST(PathTracer, RefusesBadSettingsAndMedia) {
   ThreeSpheres spheres;
   const std::vector<Material> materials = {{.kind = MaterialKind::kRice}};
   const Lights lights = sky_of(1.0f);
-  const Camera camera = camera_above(0.02, 25.0);
+  const Camera camera = test_support::looking_down(0.02, 25.0);
   EXPECT_THROW(path_trace(spheres.scene, materials, {}, lights, camera, {.width = 0}), std::invalid_argument);
   EXPECT_THROW(path_trace(spheres.scene, materials, {}, lights, camera, {.max_depth = 0}), std::invalid_argument);
   EXPECT_THROW(path_trace(spheres.scene, {}, {}, lights, camera, {}), std::invalid_argument);

@@ -33,15 +33,6 @@ void place(RenderScene& scene, const test_support::TestMesh& mesh, int material 
   scene.add_instance(scene.add_prototype(mesh.V, mesh.F), Eigen::Affine3d::Identity(), material);
 }
 
-Camera looking_down(double height, double fov) {
-  Camera c;
-  c.position = {0, 0, height};
-  c.target = {0, 0, 0};
-  c.up = {0, 1, 0};
-  c.vertical_fov_degrees = fov;
-  return c;
-}
-
 // A closed convex diffuse object in a uniform environment of radiance 1 reflects its albedo
 // (pbrt's furnace-style known answer), with ambient occlusion on: nothing occludes it.
 TEST(Renderer, DiffuseSphereInAUniformEnvironmentReflectsItsAlbedo) {
@@ -52,7 +43,7 @@ TEST(Renderer, DiffuseSphereInAUniformEnvironmentReflectsItsAlbedo) {
   Lights lights;
   lights.environment.constant = Color::Constant(1.0f);
   const std::vector<Material> materials = {{.kind = MaterialKind::kDiffuse, .albedo = Color::Constant(0.5f)}};
-  const Image image = render(scene, materials, lights, looking_down(4.0, 40.0), table(),
+  const Image image = render(scene, materials, lights, test_support::looking_down(4.0, 40.0), table(),
                              {.width = 24, .height = 24, .samples_per_pixel = 256});
   // The centre pixels see the sphere; the corners see the environment.
   double centre = 0.0;
@@ -72,7 +63,7 @@ TEST(Renderer, LambertianPlaneUnderTheSun) {
   lights.suns.push_back({.direction = {std::sin(1.0472f), 0.0f, std::cos(1.0472f)},
                          .irradiance = Color::Constant(std::numbers::pi_v<float>)});
   const std::vector<Material> materials = {{.kind = MaterialKind::kDiffuse, .albedo = Color(0.2f, 0.4f, 0.8f)}};
-  const Image image = render(scene, materials, lights, looking_down(1.0, 30.0), table(),
+  const Image image = render(scene, materials, lights, test_support::looking_down(1.0, 30.0), table(),
                              {.width = 8, .height = 8, .samples_per_pixel = 64});
   // cos θ varies by ±0.4% over the sun's disc; 64 samples average that down.
   for (const auto& p : image.pixels) {
@@ -94,7 +85,7 @@ TEST(Renderer, RiceSphereFollowsTheCdrfPastTheTerminator) {
   lights.suns.push_back({.direction = {1.0f, 0.0f, 0.0f}, .irradiance = Color::Constant(std::numbers::pi_v<float>)});
   const std::vector<Material> materials = {
       {.kind = MaterialKind::kRice, .albedo = Color::Constant(1.0f), .sigma0 = sigma0, .roughness = 1.0}};
-  const Camera camera = looking_down(50 * radius, 3.0);
+  const Camera camera = test_support::looking_down(50 * radius, 3.0);
   const RenderSettings settings{.width = 32, .height = 32, .samples_per_pixel = 16};
   const Image image = render(scene, materials, lights, camera, table(), settings);
   int checked = 0, past_terminator = 0;
@@ -127,7 +118,7 @@ TEST(Renderer, ShadowsAreASwitch) {
   Lights lights;
   lights.suns.push_back({.direction = {0.0f, 0.0f, 1.0f}, .irradiance = Color::Constant(1.0f)});
   const std::vector<Material> materials = {{.kind = MaterialKind::kDiffuse}};
-  const Camera camera = looking_down(0.4, 60.0);  // between the ground and the blocker above it
+  const Camera camera = test_support::looking_down(0.4, 60.0);  // between the ground and the blocker above it
   RenderSettings settings{.width = 9, .height = 9, .samples_per_pixel = 1};
   const Image shadowed = render(scene, materials, lights, camera, table(), settings);
   settings.shadows = false;
@@ -149,9 +140,9 @@ TEST(Renderer, SameSeedSameImageOnAnyThreadCount) {
   Image one;
   {
     tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
-    one = render(scene, materials, lights, looking_down(4.0, 30.0), table(), settings);
+    one = render(scene, materials, lights, test_support::looking_down(4.0, 30.0), table(), settings);
   }
-  const Image many = render(scene, materials, lights, looking_down(4.0, 30.0), table(), settings);
+  const Image many = render(scene, materials, lights, test_support::looking_down(4.0, 30.0), table(), settings);
   EXPECT_EQ(rms_difference(one, many), 0.0);
 }
 
@@ -194,7 +185,7 @@ TEST(Renderer, StratifiedAndSobolConvergeFasterThanIndependent) {
   Lights lights;
   lights.quads.push_back({.corner = {-0.2f, -0.2f, 0.6f}, .edge_u = {0.4f, 0, 0}, .edge_v = {0, 0.4f, 0}});
   const std::vector<Material> materials = {{.kind = MaterialKind::kDiffuse}};
-  const Camera camera = looking_down(0.15, 90.0);
+  const Camera camera = test_support::looking_down(0.15, 90.0);
   RenderSettings settings{.width = 24, .height = 24, .samples_per_pixel = 4096, .sampler = SamplerKind::kIndependent};
   const Image reference = render(scene, materials, lights, camera, table(), settings);
   settings.samples_per_pixel = 64;
