@@ -3,8 +3,7 @@
 //
 // Scene: the renderer studies' plate of grains (experiments/render/grain_plate.hpp) at W = 20%,
 // the grains' medium from the water-content model, under a sky and a sun of `sun_radius`
-// (a soft sun: light that crosses a grain reaches a path only when the path, leaving the grain,
-// meets the sun's disc, and the real sun's 0.27° would take millions of samples a pixel).
+// (the real sun's by default, as the render study's).
 //  - Depth: the plate path-traced at each of `depths` surface events, with the same samples and
 //    seed as the reference (depth `reference_depth`), so that the difference is the truncation
 //    alone; the depth chosen is the smallest within 1% RMS of the mean radiance. And the
@@ -27,7 +26,7 @@ struct PathDepthSettings {
   std::vector<int> depths = {1, 2, 3, 4, 6, 8, 12, 16, 24, 32};
   int reference_depth = 64;
   int cdrf_spp = 256;
-  double sun_radius = 0.1;  ///< [rad]
+  double sun_radius = 0.00465;  ///< [rad]
   std::uint64_t seed = 1;
 
   /// A small image, few samples and depths, for CI (seconds).
