@@ -15,10 +15,11 @@ void encode_video(const std::filesystem::path& folder, const std::string& patter
   set_activity("video " + name);
   const std::string partial = "." + name + ".partial";  // renamed into place once whole
   // An even size: yuv420p halves the chroma planes, and libx264 refuses odd dimensions.
-  const std::vector<std::string> argv = {
-      "ffmpeg", "-y", "-loglevel", "error", "-framerate", std::to_string(fps), "-start_number", std::to_string(first),
-      "-i", pattern, "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf", "18",
-      "-movflags", "+faststart", "-f", "mp4", partial};
+  const std::vector<std::string> argv = {"ffmpeg", "-nostdin", "-y", "-loglevel", "error",
+                                         "-framerate", std::to_string(fps), "-start_number", std::to_string(first),
+                                         "-i", pattern, "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2",
+                                         "-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf", "18",
+                                         "-movflags", "+faststart", "-f", "mp4", partial};
   const ProgramRun run = run_program(folder, argv);
   if (!run.started)
     throw std::runtime_error("video: ffmpeg is not installed or could not start (Debian package ffmpeg)");
