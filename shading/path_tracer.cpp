@@ -1,8 +1,6 @@
 // Path tracing through grains, the reference integrator (path_tracer.hpp).
 #include "shading/path_tracer.hpp"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -14,7 +12,7 @@
 #include <string>
 
 #include "shading/fresnel.hpp"
-#include "shading/renderer.hpp"
+#include "shading/image_tiles.hpp"
 #include "shading/scattering.hpp"
 #include "shading/tangent_frame.hpp"
 
@@ -335,13 +333,7 @@ void validate(const std::vector<Material>& materials, const std::vector<std::opt
               const RenderScene& scene, const PathTraceSettings& s) {
   if (s.width < 1 || s.height < 1 || s.samples_per_pixel < 1 || s.max_depth < 1 || s.max_scatterings < 1)
     throw std::invalid_argument("path_trace: width, height, samples per pixel, depth and scatterings must be at least 1");
-  if (materials.empty()) throw std::invalid_argument("path_trace: no materials");
-  for (int i = 0; i < scene.instance_count(); ++i) {
-    const int m = scene.material_of(i);
-    if (m < 0 || m >= static_cast<int>(materials.size()))
-      throw std::invalid_argument("path_trace: instance " + std::to_string(i) + " has material " + std::to_string(m) +
-                                  " of " + std::to_string(materials.size()));
-  }
+  check_instance_materials(scene, materials.size(), "path_trace");
   for (std::size_t k = 0; k < media.size(); ++k) {
     if (!media[k]) continue;
     const Medium& m = *media[k];
@@ -365,16 +357,11 @@ Image path_trace(const RenderScene& scene, const std::vector<Material>& material
   for (const Sun& sun : lights.suns) context.suns.push_back(sun.sampler());
   Image image(settings.width, settings.height);
   const Camera::Frame frame = camera.frame(static_cast<double>(settings.width) / settings.height);
-  const int tiles_x = (settings.width + kTileSize - 1) / kTileSize;
-  const int tiles = ((settings.height + kTileSize - 1) / kTileSize) * tiles_x;
-  std::atomic<int> done = 0;
   std::atomic<long long> paths = 0, rays = 0, scatterings = 0, walks_cut = 0, walks_lost = 0;
-  tbb::parallel_for(0, tiles, [&](int tile) {
-    if (cancelled && cancelled()) return;
+  for_each_tile(settings.width, settings.height, progress, cancelled, [&](int x0, int y0, int x1, int y1) {
     PathCounters counters;
-    const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
-    for (int y = y0; y < std::min(y0 + kTileSize, settings.height); ++y) {
-      for (int x = x0; x < std::min(x0 + kTileSize, settings.width); ++x) {
+    for (int y = y0; y < y1; ++y) {
+      for (int x = x0; x < x1; ++x) {
         const PixelSampler pixel(settings.sampler, settings.seed, x, y, settings.samples_per_pixel);
         Color sum = Color::Zero();
         for (int i = 0; i < settings.samples_per_pixel; ++i) {
@@ -393,8 +380,6 @@ Image path_trace(const RenderScene& scene, const std::vector<Material>& material
     scatterings += counters.scatterings;
     walks_cut += counters.walks_cut;
     walks_lost += counters.walks_lost;
-    const int finished = ++done;
-    if (progress) progress(finished, tiles);
   });
   if (stats) {
     *stats = {paths, rays, scatterings, walks_cut, walks_lost,

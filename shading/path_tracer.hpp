@@ -30,7 +30,7 @@
 //
 // Every random number is the pixel sampler's (sampler.hpp), dimension pairs in the order the
 // path uses them, so an image depends only on the seed, never on the thread count; tiles of
-// kTileSize² pixels as in renderer.hpp. Written by hand: Mitsuba and pbrt are not packaged for
+// kTileSize² pixels (image_tiles.hpp). Written by hand: Mitsuba and pbrt are not packaged for
 // Debian, and Embree only answers ray queries.
 #pragma once
 

@@ -1,8 +1,6 @@
 // Direct-lighting renderer over Embree (renderer.hpp).
 #include "shading/renderer.hpp"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -183,30 +181,18 @@ Image render(const RenderScene& scene, const std::vector<Material>& materials, c
              const std::function<void(int, int)>& progress, const std::function<bool()>& cancelled) {
   if (settings.width < 1 || settings.height < 1 || settings.samples_per_pixel < 1)
     throw std::invalid_argument("render: width, height and samples per pixel must be at least 1");
-  if (materials.empty()) throw std::invalid_argument("render: no materials");
-  // Material indices are checked here, once, rather than per hit.
-  for (int i = 0; i < scene.instance_count(); ++i) {
-    const int m = scene.material_of(i);
-    if (m < 0 || m >= static_cast<int>(materials.size()))
-      throw std::invalid_argument("render: instance " + std::to_string(i) + " has material " + std::to_string(m) +
-                                  " of " + std::to_string(materials.size()));
-  }
+  check_instance_materials(scene, materials.size(), "render");
   const auto start = std::chrono::steady_clock::now();
   Image image(settings.width, settings.height);
-  const int tiles_x = (settings.width + kTileSize - 1) / kTileSize;
-  const int tiles = tile_count(settings);
-  std::atomic<int> done = 0;
   std::atomic<long long> camera_rays = 0, shadow_rays = 0;
   const Camera::Frame frame = camera.frame(static_cast<double>(settings.width) / settings.height);
   std::vector<Sun::Sampler> suns;
   for (const Sun& sun : lights.suns) suns.push_back(sun.sampler());
-  tbb::parallel_for(0, tiles, [&](int tile) {
-    if (cancelled && cancelled()) return;
+  for_each_tile(settings.width, settings.height, progress, cancelled, [&](int x0, int y0, int x1, int y1) {
     Counters counters;
     Batch batch;
-    const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
-    for (int y = y0; y < std::min(y0 + kTileSize, settings.height); ++y) {
-      for (int x = x0; x < std::min(x0 + kTileSize, settings.width); ++x) {
+    for (int y = y0; y < y1; ++y) {
+      for (int x = x0; x < x1; ++x) {
         const PixelSampler sampler(settings.sampler, settings.seed, x, y, settings.samples_per_pixel);
         Color sum = Color::Zero();
         constexpr int kBatch = 64;
@@ -220,8 +206,6 @@ Image render(const RenderScene& scene, const std::vector<Material>& materials, c
     }
     camera_rays += counters.camera;
     shadow_rays += counters.shadow;
-    const int finished = ++done;
-    if (progress) progress(finished, tiles);
   });
   if (stats) {
     stats->camera_rays = camera_rays;

@@ -5,7 +5,7 @@
 // specular lobe against the environment; rays that leave the scene see the environment.
 // There is no indirect bounce: the CDRF is the paper's local shading model. A rice grain's
 // shadow and occlusion rays ignore the grain itself: the CDRF's light past the terminator
-// reaches the point through the grain. Tiles of 16×16 pixels run on TBB's threads; the image depends only on
+// reaches the point through the grain. Tiles of 16×16 pixels (image_tiles.hpp) run on TBB's threads; the image depends only on
 // the seed, never on the thread count.
 #pragma once
 
@@ -16,6 +16,7 @@
 #include "shading/camera.hpp"
 #include "shading/cdrf.hpp"
 #include "shading/image.hpp"
+#include "shading/image_tiles.hpp"
 #include "shading/lights.hpp"
 #include "shading/material.hpp"
 #include "shading/render_scene.hpp"
@@ -38,11 +39,8 @@ struct RenderStats {
   double seconds = 0.0;
 };
 
-/// Tiles of kTileSize² pixels, the unit of work and of progress.
-constexpr int kTileSize = 16;
-inline int tile_count(const RenderSettings& s) {
-  return ((s.width + kTileSize - 1) / kTileSize) * ((s.height + kTileSize - 1) / kTileSize);
-}
+/// The image's tiles (image_tiles.hpp), the unit of work and of progress.
+inline int tile_count(const RenderSettings& s) { return tile_count(s.width, s.height); }
 
 /// `progress(done, total)` is called after each tile, from the thread that rendered it; once
 /// `cancelled()` returns true no further tile starts (the image is then incomplete).
