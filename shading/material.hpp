@@ -2,7 +2,9 @@
 // incident radiance (so each is one function of the two directions):
 //  - kRice: the CDRF diffuse term (paper eqs. 6–8), albedo/π · f_r(θ_i, σ0 max(κ, 0)), which
 //    replaces the cosine of a Lambertian surface and lets light in past the terminator on
-//    convex parts, plus the wet surface's dielectric specular lobe. The CDRF's σ = σ0/r is
+//    convex parts, plus the wet surface's dielectric specular lobe. With a translucency
+//    table it is the translucent rice model (translucency.hpp, eq. T1): τ(d, cos θ_i)/π
+//    more, for the light through a grain of thickness d, in the albedo's colour. The CDRF's σ = σ0/r is
 //    derived for convex surfaces of radius r; in a concave pit light does not wrap around,
 //    and with σ0 |κ| the pores of a shaded grain glowed at f_r ≈ 1/π;
 //  - kDiffuse: Lambertian, albedo/π · max(cos θ_i, 0);
@@ -25,6 +27,9 @@
 #include "shading/fresnel.hpp"
 #include "shading/lights.hpp"
 #include "shading/tangent_frame.hpp"
+#include "shading/translucency.hpp"
+
+#include <memory>
 
 namespace rice::shading {
 
@@ -36,6 +41,8 @@ struct Material {
   double sigma0 = 0.0;          ///< [m], kRice: CDRF width σ = σ0 max(κ, 0)
   double refractive_index = 1.45;  ///< of the specular coat (kRice, kGlazed)
   double roughness = 0.15;      ///< GGX α of the specular lobe
+  /// kRice: τ(d, cos θ) of the translucent model; null: the paper's CDRF alone.
+  std::shared_ptr<const TranslucencyTable> translucency = nullptr;
 };
 
 /// GGX normal distribution D(h) for cos θ_h = n·h.
@@ -62,13 +69,17 @@ inline double specular_term(const Eigen::Vector3f& n, const Eigen::Vector3f& wo,
   return ggx_distribution(n.dot(h), alpha) * ggx_smith(cos_o, cos_i, alpha) * f / (4.0 * cos_o);
 }
 
-/// Diffuse part f_d · cos-like for light from ω_i at a point of curvature κ [1/m].
+/// Diffuse part f_d · cos-like for light from ω_i at a point of curvature κ [1/m] and
+/// thickness d [m].
 inline Color diffuse_term(const Material& m, const CdrfTable& cdrf, const Eigen::Vector3f& n, const Eigen::Vector3f& wo,
-                          const Eigen::Vector3f& wi, double curvature) {
+                          const Eigen::Vector3f& wi, double curvature, double thickness = 0.0) {
   const double cos_i = n.dot(wi);
   switch (m.kind) {
-    case MaterialKind::kRice:
-      return m.albedo * static_cast<float>(cdrf(cos_i, m.sigma0 * std::max(curvature, 0.0)) / std::numbers::pi);
+    case MaterialKind::kRice: {
+      double exitance = cdrf(cos_i, m.sigma0 * std::max(curvature, 0.0));  // over the albedo A
+      if (m.translucency) exitance = std::max(0.0, exitance + (*m.translucency)(thickness, cos_i) / m.albedo.mean());
+      return m.albedo * static_cast<float>(exitance / std::numbers::pi);
+    }
     case MaterialKind::kDiffuse:
       return m.albedo * static_cast<float>(std::max(cos_i, 0.0) / std::numbers::pi);
     case MaterialKind::kSubsurfaceReference:
@@ -87,8 +98,9 @@ inline bool has_specular(const Material& m) { return m.kind != MaterialKind::kDi
 
 /// f · cos-like, diffuse and specular together.
 inline Color surface_response(const Material& m, const CdrfTable& cdrf, const Eigen::Vector3f& n,
-                              const Eigen::Vector3f& wo, const Eigen::Vector3f& wi, double curvature) {
-  Color c = diffuse_term(m, cdrf, n, wo, wi, curvature);
+                              const Eigen::Vector3f& wo, const Eigen::Vector3f& wi, double curvature,
+                              double thickness = 0.0) {
+  Color c = diffuse_term(m, cdrf, n, wo, wi, curvature, thickness);
   if (has_specular(m)) c += static_cast<float>(specular_term(n, wo, wi, m.refractive_index, m.roughness));
   return c;
 }

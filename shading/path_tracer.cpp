@@ -92,6 +92,19 @@ Ray leaving(const RenderScene& scene, const Vector3f& p, const Vector3f& ng, con
   return {p + (ng.dot(d) >= 0.0f ? offset : -offset) * ng, d};
 }
 
+/// One sample of each sun and each quad light seen from p, in the path's sample order.
+template <typename Add>
+void for_each_light_sample(const PathContext& c, const Vector3f& p, PathSampler& sampler, const Add& add) {
+  for (const Sun::Sampler& sun : c.suns) {
+    const auto [a, b] = sampler.pair();
+    add(sun.sample(a, b));
+  }
+  for (const QuadLight& quad : c.lights.quads) {
+    const auto [a, b] = sampler.pair();
+    add(quad.sample(p, a, b));
+  }
+}
+
 /// Direct light at a Lambertian point (normal n facing the path, albedo A): suns and quads by
 /// shadow rays, f = A/π, each light one sample.
 Color direct_light(const PathContext& c, const ShadingPoint& hit, const Vector3f& n, const Color& albedo,
@@ -105,14 +118,7 @@ Color direct_light(const PathContext& c, const ShadingPoint& hit, const Vector3f
     ++counters.rays;
     if (!c.scene.occluded(shadow)) L += albedo * l.weight * (cos_i / std::numbers::pi_v<float>);
   };
-  for (const Sun::Sampler& sun : c.suns) {
-    const auto [a, b] = sampler.pair();
-    add(sun.sample(a, b));
-  }
-  for (const QuadLight& quad : c.lights.quads) {
-    const auto [a, b] = sampler.pair();
-    add(quad.sample(hit.position, a, b));
-  }
+  for_each_light_sample(c, hit.position, sampler, add);
   return L;
 }
 
@@ -268,6 +274,81 @@ WalkExit walk(const PathContext& c, int instance, const Medium& m, Vector3f p, c
   }
 }
 
+/// Whether a surface is shaded by the fast rice model (the CDRF, with its translucency when
+/// set) rather than walked through or taken as Lambertian.
+bool fast_rice(const PathContext& c, const Material& m, const Medium* medium) {
+  return !medium && m.kind == MaterialKind::kRice && c.settings.cdrf;
+}
+
+/// Direct light at a fast-rice point: the suns and quads by shadow rays that see through the
+/// grain itself (its light past the terminator and through it is the model's), f the
+/// material's whole response, diffuse and specular.
+Color fast_rice_direct(const PathContext& c, const ShadingPoint& hit, const Material& m, const Vector3f& n,
+                       const Vector3f& ng, const Vector3f& wo, PathSampler& sampler, PathCounters& counters) {
+  Color L = Color::Zero();
+  const auto add = [&](const LightSample& l) {
+    if ((l.weight <= 0.0f).all()) return;
+    const Color f = surface_response(m, *c.settings.cdrf, n, wo, l.direction, hit.curvature, hit.thickness);
+    if (!(f > 0.0f).any()) return;
+    Ray shadow = leaving(c.scene, hit.position, ng, l.direction);
+    shadow.t_max = l.distance * (1.0f - 1e-4f);
+    ++counters.rays;
+    if (!c.scene.occluded(shadow, hit.instance)) L += f * l.weight;
+  };
+  for_each_light_sample(c, hit.position, sampler, add);
+  return L;
+}
+
+/// The next direction from a fast-rice point and its weight f cos / (lobe probability · pdf):
+/// the specular lobe with probability kSpecular, else the diffuse response, sampled by a
+/// cosine about n (probability kFront) or about −n (light through the grain; the CDRF also
+/// reaches past the terminator). Zero weight: the path ends.
+struct FastBounce {
+  Vector3f direction;
+  Color weight = Color::Zero();
+};
+FastBounce fast_rice_bounce(const PathContext& c, const ShadingPoint& hit, const Material& m, const Vector3f& n,
+                            const Vector3f& wo, PathSampler& sampler) {
+  constexpr double kSpecular = 0.1, kFront = 0.75;
+  const auto [lobe, u] = sampler.pair();
+  const auto [a, b] = sampler.pair();
+  FastBounce next;
+  if (lobe < kSpecular) {
+    const double w = sample_specular(n, wo, m.refractive_index, m.roughness, a, b, next.direction);
+    next.weight = Color::Constant(static_cast<float>(w / kSpecular));
+    return next;
+  }
+  const bool front = u < kFront;
+  next.direction = cosine_direction(front ? n : Vector3f(-n), a, b);
+  const double cos_i = n.dot(next.direction);
+  const double pdf = (cos_i > 0.0 ? kFront * cos_i : (1.0 - kFront) * -cos_i) / std::numbers::pi;
+  if (!(pdf > 0.0)) return next;
+  const Color f = diffuse_term(m, *c.settings.cdrf, n, wo, next.direction, hit.curvature, hit.thickness);
+  next.weight = f / static_cast<float>((1.0 - kSpecular) * pdf);
+  return next;
+}
+
+/// The suns' glints off a grain's surface, met from outside at p (normal n facing ω_o): the
+/// material's GGX reflection lobe (material.hpp's specular_term, as the fast models have it),
+/// each sun one sample and a shadow ray. Off the smooth dielectric the glint of a sun 0.27°
+/// across is seen only by the rare reflected path that meets its disc: fireflies at 2× the
+/// image's mean radiance in RMS at 512 samples, which hid every model's error (`rice study
+/// render`).
+Color sun_glints(const PathContext& c, const ShadingPoint& hit, const Material& m, const Medium& medium,
+                 const Vector3f& n, const Vector3f& ng, const Vector3f& wo, PathSampler& sampler,
+                 PathCounters& counters) {
+  Color L = Color::Zero();
+  for (const Sun::Sampler& sun : c.suns) {
+    const auto [a, b] = sampler.pair();
+    const LightSample l = sun.sample(a, b);
+    const double f = specular_term(n, wo, l.direction, medium.refractive_index, m.roughness);
+    if (!(f > 0.0)) continue;
+    ++counters.rays;
+    if (!c.scene.occluded(leaving(c.scene, hit.position, ng, l.direction))) L += l.weight * static_cast<float>(f);
+  }
+  return L;
+}
+
 /// The radiance one path brings back along the camera ray.
 Color trace(const PathContext& c, Ray ray, PathSampler& sampler, PathCounters& counters) {
   Color radiance = Color::Zero(), throughput = Color::Constant(1.0f);
@@ -275,31 +356,51 @@ Color trace(const PathContext& c, Ray ray, PathSampler& sampler, PathCounters& c
   // not after a diffuse bounce (whose shadow rays gathered them) nor, for suns, after a walk
   // that gathered them through the facets.
   bool sun_seen = true, quad_seen = true;
+  int ignore = -1;  // the fast-rice grain the path just left, which it sees through
   ++counters.paths;
-  for (int depth = 0; depth < c.settings.max_depth; ++depth) {
+  for (int depth = 0;; ++depth) {
     ++counters.rays;
-    const std::optional<ShadingPoint> hit = c.scene.intersect(ray);
+    const std::optional<ShadingPoint> hit = c.scene.intersect(ray, ignore);
+    ignore = -1;
     if (quad_seen) radiance += throughput * quad_light(c, ray, hit ? hit->t : std::numeric_limits<float>::infinity());
     if (!hit) {
       radiance += throughput * (c.lights.environment.radiance(ray.direction) +
                                 (sun_seen ? sun_discs(c, ray.direction) : Color::Zero()));
       break;
     }
+    if (depth == c.settings.max_depth) break;  // the last ray was traced for the lights it meets
     const Vector3f ng = hit->geometric_normal;
     const Medium* medium = medium_of(c, hit->material);
-    if (medium && ray.direction.dot(ng) > 0.0f) {
+    const Material& material = c.materials[hit->material];
+    const bool fast = fast_rice(c, material, medium);
+    if ((medium || fast) && ray.direction.dot(ng) > 0.0f) {
       // Leaving a grain the path was not walking in: it started inside an overlapping one.
       // Pass through.
       ray = leaving(c.scene, hit->position, ng, ray.direction);
       continue;
     }
-    if (medium) {
+    if (fast) {
+      const Vector3f wo = -ray.direction, n = hit->shading_normal.dot(wo) > 0.0f ? hit->shading_normal : ng;
+      radiance += throughput * fast_rice_direct(c, *hit, material, n, ng, wo, sampler, counters);
+      const FastBounce next = fast_rice_bounce(c, *hit, material, n, wo, sampler);
+      if (!(next.weight > 0.0f).any()) break;
+      throughput *= next.weight;
+      sun_seen = quad_seen = false;
+      ray = leaving(c.scene, hit->position, ng, next.direction);
+      ignore = hit->instance;
+    } else if (medium) {
       const Vector3d d = ray.direction.cast<double>(), n = ng.cast<double>();
       const double cos_outside = -d.dot(n);
+      const bool glints = c.settings.rough_sun_glints && !c.suns.empty();
+      if (glints) {
+        const Vector3f wo = -ray.direction, shading = hit->shading_normal.dot(wo) > 0.0f ? hit->shading_normal : ng;
+        radiance += throughput * sun_glints(c, *hit, material, *medium, shading, ng, wo, sampler, counters);
+      }
       const auto [a, unused] = sampler.pair();
       sun_seen = quad_seen = true;
       if (a < fresnel_reflectance(cos_outside, medium->refractive_index)) {
         ray = leaving(c.scene, hit->position, ng, (d + 2.0 * cos_outside * n).normalized().cast<float>());
+        sun_seen = !glints;  // the suns' reflection is the glints' above
       } else {
         const WalkExit out = walk(c, hit->instance, *medium, hit->position, ng, refract(d, n, medium->refractive_index),
                                   throughput, radiance, sampler, counters);
@@ -310,7 +411,7 @@ Color trace(const PathContext& c, Ray ray, PathSampler& sampler, PathCounters& c
     } else {
       const Vector3f n = hit->shading_normal.dot(ray.direction) < 0.0f ? hit->shading_normal : Vector3f(-hit->shading_normal);
       const Vector3f n_geometric = ng.dot(ray.direction) < 0.0f ? ng : Vector3f(-ng);
-      const Color albedo = c.materials[hit->material].albedo;
+      const Color albedo = material.albedo;
       radiance += throughput * direct_light(c, *hit, n, albedo, sampler, counters);
       const auto [a, b] = sampler.pair();
       Vector3f next = cosine_direction(n, a, b);

@@ -10,11 +10,17 @@
 // decides between internal reflection and leaving. Out of the grain it goes on to other
 // grains, the bowl, the ground and the sky. At other surfaces (diffuse, glazed and a rice
 // material without a medium are taken as Lambertian of their albedo) it gathers the suns and
-// quad lights by shadow rays and bounces in a cosine-weighted direction.
+// quad lights by shadow rays and bounces in a cosine-weighted direction. With a CDRF table
+// in the settings, a rice material without a medium is instead the fast model of
+// material.hpp: the CDRF and its translucency, lit by shadow rays that see through the grain
+// itself, bouncing into its response, front and back; paths of max_depth 1, 2, 3 are that
+// model with 0, 1, 2 bounces of light between grains (`rice study render`).
 //
 // What light reaches a path:
 //  - the environment, whenever the path leaves the scene;
-//  - a sun, through a shadow ray from a diffuse surface; at each scattering inside a grain,
+//  - a sun, through a shadow ray from a diffuse surface; off a grain's surface, through the
+//    material's GGX lobe and a shadow ray (`rough_sun_glints`: the glint of a smooth surface
+//    is a firefly no sample count tames); at each scattering inside a grain,
 //    through the one flat facet of the grain's mesh whose refraction of the sun's parallel
 //    rays passes there (found by fixed-point iteration, then a shadow ray from the facet;
 //    `suns_through_facets`); and when a path leaves the scene inside the sun's cone after a
@@ -24,8 +30,9 @@
 //    the disc, which with the real sun's 0.27° almost never happens;
 //  - a quad light, through shadow rays from diffuse surfaces, or when a path meets it right
 //    after a smooth event (the camera's ray included);
-// Paths end by Russian roulette on their throughput after three surface events, and at
-// `max_depth` surface events; a walk inside a grain ends after `max_scatterings` (that light
+// Paths end by Russian roulette on their throughput after three surface events, and after
+// `max_depth` surface events (the ray leaving the last one is traced for the sky and lights
+// it meets); a walk inside a grain ends after `max_scatterings` (that light
 // is lost: stats count them).
 //
 // Every random number is the pixel sampler's (sampler.hpp), dimension pairs in the order the
@@ -40,6 +47,7 @@
 #include <vector>
 
 #include "shading/camera.hpp"
+#include "shading/cdrf.hpp"
 #include "shading/image.hpp"
 #include "shading/lights.hpp"
 #include "shading/material.hpp"
@@ -54,11 +62,19 @@ struct PathTraceSettings {
   int samples_per_pixel = 64;
   SamplerKind sampler = SamplerKind::kSobol;
   std::uint64_t seed = 1;
-  int max_depth = 64;                ///< surface events (reflections, refractions, bounces) per path
+  int max_depth = 64;  ///< surface events (reflections, refractions, bounces) per path, ≥ 1
   long long max_scatterings = 100'000;  ///< scatterings of one walk inside a grain
   /// Suns gathered at each scattering inside a grain through the facet that refracts their
   /// light there (see the file comment); false: only by paths that meet their disc.
   bool suns_through_facets = true;
+  /// The suns' reflection off a grain is the material's rough GGX lobe, gathered by shadow
+  /// rays where a path meets the grain from outside, as the fast models' is; false: off the
+  /// smooth boundary, seen only by the rare path that meets a sun's disc (fireflies).
+  bool rough_sun_glints = true;
+  /// Set: a rice material without a medium is the fast model (the CDRF, and its translucency
+  /// when set; material.hpp) instead of Lambertian, each bounce sampling its response. The
+  /// table outlives the render.
+  const CdrfTable* cdrf = nullptr;
 };
 
 struct PathTraceStats {

@@ -24,6 +24,7 @@ struct RenderScene::Prototype {
   RTCScene scene = nullptr;
   std::vector<Eigen::Vector3f> positions, normals;
   std::vector<float> curvature;  // empty: flat
+  std::vector<float> thickness;  // empty: none
   std::vector<Eigen::Vector3i> triangles;
   // Vertex v's triangles are vertex_triangles[first_triangle[v] .. first_triangle[v + 1]),
   // built by triangles_around at its first call.
@@ -96,6 +97,17 @@ int RenderScene::add_prototype(const MeshVertices& V, const MeshTriangles& F, co
   check(embree_->device, "add_prototype");
   prototypes_.push_back(std::move(prototype));
   return static_cast<int>(prototypes_.size()) - 1;
+}
+
+void RenderScene::set_thickness(int prototype, const Eigen::VectorXd& thickness) {
+  if (committed_) throw std::logic_error("RenderScene: set_thickness after commit");
+  if (prototype < 0 || prototype >= prototype_count())
+    throw std::invalid_argument("RenderScene: no prototype " + std::to_string(prototype));
+  Prototype& p = *prototypes_[prototype];
+  if (thickness.size() != static_cast<Eigen::Index>(p.positions.size()))
+    throw std::invalid_argument("RenderScene: " + std::to_string(thickness.size()) + " thicknesses for " +
+                                std::to_string(p.positions.size()) + " vertices");
+  p.thickness.assign(thickness.data(), thickness.data() + thickness.size());
 }
 
 int RenderScene::add_instance(int prototype, const Eigen::Affine3d& transform, int material) {
@@ -232,12 +244,19 @@ RTCRay embree_ray(const Ray& ray) {
   return r;
 }
 
-/// Embree's first hit of `ray` in `scene` (geomID invalid: none).
-RTCRayHit first_hit(RTCScene scene, const Ray& ray) {
+void ignore_instance(const RTCFilterFunctionNArguments* args);
+
+/// Embree's first hit of `ray` in `scene` (geomID invalid: none), seeing through top-level
+/// instance `ignore` (−1: none).
+RTCRayHit first_hit(RTCScene scene, const Ray& ray, int ignore = -1) {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit hit;
   hit.ray = embree_ray(ray);
+  if (ignore >= 0) {
+    context.filter = ignore_instance;
+    hit.ray.id = static_cast<unsigned>(ignore);
+  }
   hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   hit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene, &context, &hit);
@@ -246,9 +265,9 @@ RTCRayHit first_hit(RTCScene scene, const Ray& ray) {
 
 }  // namespace
 
-std::optional<ShadingPoint> RenderScene::intersect(const Ray& ray) const {
+std::optional<ShadingPoint> RenderScene::intersect(const Ray& ray, int ignore) const {
   if (!committed_) throw std::logic_error("RenderScene: intersect before commit");
-  const RTCRayHit hit = first_hit(embree_->top, ray);
+  const RTCRayHit hit = first_hit(embree_->top, ray, ignore);
   return shading_point(ray, hit.ray.tfar, hit.hit.instID[0], hit.hit.primID, hit.hit.u, hit.hit.v);
 }
 
@@ -305,6 +324,10 @@ std::optional<ShadingPoint> RenderScene::shading_point(const Ray& ray, float t, 
     p.curvature = instance.curvature_scale * (w * prototype.curvature[tri[0]] + u * prototype.curvature[tri[1]] +
                                               v * prototype.curvature[tri[2]]);
   }
+  if (!prototype.thickness.empty()) {
+    p.thickness = (w * prototype.thickness[tri[0]] + u * prototype.thickness[tri[1]] + v * prototype.thickness[tri[2]]) /
+                  instance.curvature_scale;
+  }
   if (!instance.vertex_values.empty()) {
     p.baked = w * instance.vertex_values[tri[0]] + u * instance.vertex_values[tri[1]] + v * instance.vertex_values[tri[2]];
   }
@@ -317,8 +340,8 @@ std::optional<ShadingPoint> RenderScene::shading_point(const Ray& ray, float t, 
 
 namespace {
 
-// Embree's context filter for occlusion rays that see through one instance: the instance's
-// index travels in the ray's id (RTC_INVALID_GEOMETRY_ID: none).
+// Embree's context filter for rays that see through one instance: the instance's index
+// travels in the ray's id (RTC_INVALID_GEOMETRY_ID: none).
 void ignore_instance(const RTCFilterFunctionNArguments* args) {
   for (unsigned i = 0; i < args->N; ++i) {
     if (args->valid[i] != -1) continue;

@@ -28,6 +28,7 @@ struct ShadingPoint {
   float t = 0.0f;
   Eigen::Vector3f position, geometric_normal, shading_normal;  ///< normals unit, outward
   double curvature = 0.0;  ///< mean curvature [1/m] in world units
+  double thickness = 0.0;  ///< local thickness [m] in world units (set_thickness; 0 if none)
   double baked = 0.0;      ///< interpolated per-vertex value set by set_vertex_values (0 if none)
   int material = 0;
   int instance = 0;
@@ -56,6 +57,11 @@ class RenderScene {
   int add_prototype(const MeshVertices& V, const MeshTriangles& F, const Eigen::VectorXd& curvature = {},
                     Reuse reuse = Reuse::kShared);
 
+  /// Per-vertex thickness of a prototype (#V, thickness.hpp), read back interpolated and in
+  /// world units as ShadingPoint::thickness. Call before commit; throws
+  /// std::invalid_argument for a wrong size or an unknown prototype.
+  void set_thickness(int prototype, const Eigen::VectorXd& thickness);
+
   /// Places a prototype: `transform` must be a rotation, a uniform scale and a translation
   /// (curvature scales by 1/s); throws std::invalid_argument otherwise. Returns its index.
   int add_instance(int prototype, const Eigen::Affine3d& transform, int material);
@@ -63,7 +69,8 @@ class RenderScene {
   /// Builds Embree's hierarchies; call after the last add and before any query.
   void commit();
 
-  std::optional<ShadingPoint> intersect(const Ray& ray) const;
+  /// The first hit along the ray of anything but instance `ignore` (−1: none).
+  std::optional<ShadingPoint> intersect(const Ray& ray, int ignore = -1) const;
   /// The first hits of many rays at once, through Embree's stream interface told they are
   /// coherent (a pixel's camera rays): the same answers as intersect, faster.
   void intersect_coherent(const std::vector<Ray>& rays, std::vector<std::optional<ShadingPoint>>& hits) const;

@@ -82,14 +82,14 @@ void shade_remaining_lights(const RenderScene& scene, const Lights& lights, cons
     sampler.pair(index, pair++, a, b);
     const LightSample l = quad.sample(hit.position, a, b);
     if ((l.weight <= 0.0f).all()) continue;
-    add(surface_response(material, cdrf, s.n, s.wo, l.direction, hit.curvature) * l.weight, l.direction, l.distance,
+    add(surface_response(material, cdrf, s.n, s.wo, l.direction, hit.curvature, hit.thickness) * l.weight, l.direction, l.distance,
         settings.shadows);
   }
   if (lights.environment.empty()) return;
   // Diffuse part over the whole sphere; the specular part from its own lobe below.
   sampler.pair(index, pair++, a, b);
   const LightSample l = lights.environment.sample(a, b);
-  add(diffuse_term(material, cdrf, s.n, s.wo, l.direction, hit.curvature) * l.weight, l.direction, l.distance,
+  add(diffuse_term(material, cdrf, s.n, s.wo, l.direction, hit.curvature, hit.thickness) * l.weight, l.direction, l.distance,
       settings.ambient_occlusion);
   if (has_specular(material)) {
     sampler.pair(index, pair++, a, b);
@@ -141,7 +141,7 @@ Color shade_batch(const RenderScene& scene, const std::vector<Material>& materia
       double a = 0.0, b = 0.0;
       sampler.pair(first + k, 2 + static_cast<int>(j), a, b);
       const LightSample l = suns[j].sample(a, b);
-      const Color c = surface_response(*s.material, cdrf, s.n, s.wo, l.direction, s.hit->curvature) * l.weight;
+      const Color c = surface_response(*s.material, cdrf, s.n, s.wo, l.direction, s.hit->curvature, s.hit->thickness) * l.weight;
       if (!(c > 0.0f).any()) continue;
       if (!settings.shadows) {
         s.radiance += c;

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <stdexcept>
 
@@ -28,7 +29,35 @@ struct PhotonSource {
   double carried = 0.0;
 };
 
-// Walks one photon from its entry; splats escaping flux (times `flux`) onto `tally`.
+// Where light that leaves grain `instance` at x along d goes next: back into the same grain
+// (a pore inside it, or a dent of its surface it faces), after bouncing between that
+// grain's walls by Fresnel reflection as chance picks, or away (nullopt). Re-entry returns
+// the point just inside and the refracted direction.
+struct Reentry {
+  Vector3d x, d;
+};
+std::optional<Reentry> follow_outside(const RenderScene& scene, int instance, double eta, Vector3d x, Vector3d d,
+                                      std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const float offset = scene.ray_offset();
+  for (int bounce = 0; bounce < 100; ++bounce) {
+    const auto wall = scene.intersect_instance({x.cast<float>(), d.cast<float>()}, instance);
+    if (!wall) return std::nullopt;
+    const Vector3d n = wall->geometric_normal.cast<double>();
+    if (d.dot(n) >= 0.0) return std::nullopt;  // met its wall from inside: a crack in the mesh
+    if (unit(rng) < fresnel_reflectance(-d.dot(n), eta)) {
+      d -= 2.0 * d.dot(n) * n;
+      x = wall->position.cast<double>() + offset * n;
+      continue;
+    }
+    return Reentry{wall->position.cast<double>() - offset * n, refract(d, n, eta)};
+  }
+  return std::nullopt;
+}
+
+// Walks one photon from its entry; splats escaping flux (times `flux`) onto `tally` where it
+// leaves for good. Light that leaves into a pore or a dent of the same grain is followed back
+// in (follow_outside): on a porous grain most of it does.
 void walk(const RenderScene& scene, int instance, const Medium& medium, const ShadingPoint& entry,
           const Vector3d& travel, double flux, std::mt19937_64& rng, std::vector<double>& tally) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -55,12 +84,23 @@ void walk(const RenderScene& scene, int instance, const Medium& medium, const Sh
       if (boundary->instance != instance) return;  // into another body (an overlap): lost
       const Vector3d normal = boundary->geometric_normal.cast<double>();
       const double reflectance = fresnel_reflectance(d.dot(normal), 1.0 / eta);
-      const double out = weight * (1.0 - reflectance);
-      if (scattered) {
-        const Eigen::Vector3i tri = scene.triangle(instance, boundary->primitive);
-        for (int k = 0; k < 3; ++k) tally[tri[k]] += out * boundary->barycentric[k];
+      const Vector3d out_direction = refract(d, normal, 1.0 / eta);
+      const Vector3d outside = boundary->position.cast<double>() + offset * normal;
+      if (reflectance < 1.0) {
+        if (const std::optional<Reentry> back = follow_outside(scene, instance, eta, outside, out_direction, rng)) {
+          if (unit(rng) >= reflectance) {  // out, and back in elsewhere
+            x = back->x;
+            d = back->d;
+            continue;
+          }
+        } else {  // out for good: the transmitted part leaves here
+          if (scattered) {
+            const Eigen::Vector3i tri = scene.triangle(instance, boundary->primitive);
+            for (int k = 0; k < 3; ++k) tally[tri[k]] += weight * (1.0 - reflectance) * boundary->barycentric[k];
+          }
+          weight *= reflectance;
+        }
       }
-      weight *= reflectance;
       x = boundary->position.cast<double>() - offset * normal;
       d -= 2.0 * d.dot(normal) * normal;
     }

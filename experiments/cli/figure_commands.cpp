@@ -62,7 +62,7 @@ class FigureCommands : public CommandFamily {
   }
 
   void add_figure13(CLI::App* figure) {
-    CLI::App* c = figure->add_subcommand("13", "japonica grains soaked at 5 °C for five times: the CDRF, the random-walk bake and the path tracer");
+    CLI::App* c = figure->add_subcommand("13", "japonica grains soaked at 5 °C for five times: the CDRF, the translucent model and the path tracer");
     Figure13Settings& s = figure13_;
     c->add_option("--out", figure13_out_, "output folder")->capture_default_str();
     c->add_option("--soak-minutes", s.soak_minutes, "soak times, one grain each")
@@ -73,8 +73,8 @@ class FigureCommands : public CommandFamily {
     c->add_option("--height", s.height, "pixels")->check(number_in(16, 16384))->capture_default_str();
     c->add_option("--spp", s.samples_per_pixel, "samples per pixel")->check(number_in(1, 1 << 20))
         ->capture_default_str();
-    c->add_option("--photons", s.photons, "the bake: photons per grain and light")->check(number_in(1000, 1e9))
-        ->capture_default_str();
+    c->add_option("--translucent-bounces", s.translucent_bounces, "bounces of the translucent model's row")
+        ->check(number_in(0, 16))->capture_default_str();
     c->add_option("--path-spp", s.path_spp, "samples per pixel of the path-traced row")->check(number_in(1, 1 << 20))
         ->capture_default_str();
     c->add_option("--seed", s.seed, "random seed (the grain and the samples)")->check(seed_value())

@@ -45,8 +45,11 @@ class RenderCommands : public CommandFamily {
         ->check(CLI::IsMember({"sobol", "stratified", "independent"}))->capture_default_str();
     c->add_option("--seed", render_.render.seed, "random seed")->check(seed_value())->capture_default_str();
     c->add_option("--integrator", integrator_,
-                  "cdrf (the paper's shading, direct light) or path (the reference: light through and between grains)")
-        ->check(CLI::IsMember({"cdrf", "path"}))->capture_default_str();
+                  "cdrf (the paper's shading), translucent (the CDRF and the light through the grain) or path (the "
+                  "reference: light through and between grains)")
+        ->check(CLI::IsMember({"cdrf", "translucent", "path"}))->capture_default_str();
+    c->add_option("--bounces", render_.bounces, "cdrf, translucent: bounces of light between surfaces (0: direct)")
+        ->check(number_in(0, 64))->capture_default_str();
     c->add_option("--max-depth", render_.max_depth, "path: surface events per path")->check(number_in(1, 100000))
         ->capture_default_str();
     c->add_flag("--no-shadows", no_shadows_, "lights are not blocked");
@@ -91,7 +94,9 @@ class RenderCommands : public CommandFamily {
     s.render.sampler = sampler_ == "stratified"    ? shading::SamplerKind::kStratified
                        : sampler_ == "independent" ? shading::SamplerKind::kIndependent
                                                    : shading::SamplerKind::kSobol;
-    s.integrator = integrator_ == "path" ? RenderIntegrator::kPath : RenderIntegrator::kCdrf;
+    s.integrator = integrator_ == "path"          ? RenderIntegrator::kPath
+                   : integrator_ == "translucent" ? RenderIntegrator::kTranslucent
+                                                  : RenderIntegrator::kCdrf;
     s.render.shadows = !no_shadows_;
     s.render.ambient_occlusion = !no_ao_;
     s.ground = !no_ground_;

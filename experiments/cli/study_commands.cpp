@@ -16,6 +16,7 @@
 #include "experiments/studies/soft_curvature_study.hpp"
 #include "experiments/studies/soft_instance_study.hpp"
 #include "experiments/studies/tet_quality_study.hpp"
+#include "experiments/studies/translucency_study.hpp"
 #include "experiments/studies/xpbd_stiffness_study.hpp"
 
 namespace rice::experiments {
@@ -27,6 +28,7 @@ class StudyCommands : public CommandFamily {
     CLI::App* study = app.add_subcommand("study", "convergence, stiffness and validation studies");
     study->require_subcommand(1);
     add_cdrf(study);
+    add_translucency(study);
     add_render(study);
     add_path_depth(study);
     add_soft_curvature(study);
@@ -59,11 +61,52 @@ class StudyCommands : public CommandFamily {
     add(c, [this] { experiments::validate(cdrf_); }, [this] { cdrf_study_command(cdrf_, cdrf_out_); });
   }
 
+  void add_translucency(CLI::App* study) {
+    CLI::App* c = study->add_subcommand(
+        "translucency", "light through the grain: tau(d, cos theta) fitted per water content on grain meshes");
+    TranslucencyStudySettings& s = translucency_;
+    c->add_option("--out", translucency_out_, "output folder")->capture_default_str();
+    c->add_flag("--quick", translucency_quick_, "one water content, one cultivar, 2 directions, 20000 photons");
+    c->add_option("--soak-minutes", s.soak_minutes, "soak times, one water content each")
+        ->check(number_in(0, 1e4, Ends::kOpenLow))->capture_default_str();
+    c->add_option("--temperature", s.temperature_c, "soaking water [°C]")->check(number_in(0, 100))
+        ->capture_default_str();
+    c->add_option("--cultivars", s.cultivars, "cultivars of the grains")->capture_default_str();
+    c->add_option("--grains", s.grains_per_cultivar, "grains per cultivar fitted (as many more checked)")
+        ->check(number_in(1, 100))->capture_default_str();
+    c->add_option("--directions", s.directions, "sun directions per grain")->check(number_in(1, 1000))
+        ->capture_default_str();
+    c->add_option("--photons", s.photons, "photons per grain and direction")->check(number_in(1000, 1e9))
+        ->capture_default_str();
+    c->add_option("--smoothing", s.smoothing, "weight of the table's second differences")->check(number_in(0, 1e6))
+        ->capture_default_str();
+    c->add_option("--normal-radius-mm", s.normal_radius_mm, "shading normals smoothed over this radius [mm]")
+        ->check(number_in(0, 10))->capture_default_str();
+    c->add_option("--curvature-rings", s.curvature_rings, "rings of the curvature's jet fit")->check(number_in(1, 20))
+        ->capture_default_str();
+    c->add_option("--seed", s.seed, "random seed")->check(seed_value())->capture_default_str();
+    add(c, [this] { experiments::validate(translucency_settings()); },
+        [this] { translucency_study_command(translucency_settings(), translucency_out_); });
+  }
+
+  RenderStudySettings render_settings() const { return render_quick_ ? RenderStudySettings::quick() : render_; }
+
+  TranslucencyStudySettings translucency_settings() const {
+    if (!translucency_quick_) return translucency_;
+    TranslucencyStudySettings s = translucency_;
+    s.soak_minutes = {60};
+    s.cultivars = {"japonica"};
+    s.directions = 2;
+    s.photons = 20'000;
+    return s;
+  }
+
   void add_render(CLI::App* study) {
     CLI::App* c =
         study->add_subcommand("render", "image error against time: samplers, and the CDRF against the random walk");
     RenderStudySettings& s = render_;
     c->add_option("--out", render_out_, "output folder")->capture_default_str();
+    c->add_flag("--quick", render_quick_, "toy sizes, seconds (the other options ignored)");
     c->add_option("--width", s.width, "pixels")->check(number_in(8, 4096))->capture_default_str();
     c->add_option("--height", s.height, "pixels")->check(number_in(8, 4096))->capture_default_str();
     c->add_option("--grains", s.grains, "grains on the plate")->check(number_in(1, 10000))->capture_default_str();
@@ -75,8 +118,19 @@ class StudyCommands : public CommandFamily {
         ->check(number_in(1000, 1e9))->capture_default_str();
     c->add_option("--bake-spp", s.bake_render_spp, "samples of the random-walk renders")
         ->check(number_in(1, 65536))->capture_default_str();
+    c->add_option("--heap-grains", s.heap_grains, "grains in the heap")->check(number_in(1, 100000))
+        ->capture_default_str();
+    c->add_option("--model-samples", s.models.samples, "samples per pixel of each model's renders")
+        ->check(number_in(1, 65536))->capture_default_str();
+    c->add_option("--path-reference-spp", s.models.reference_spp, "samples of the path-traced reference")
+        ->check(number_in(2, 1 << 20))->capture_default_str();
+    c->add_option("--bounces", s.models.bounces, "bounces of the translucent model to compare (beside 0)")
+        ->check(number_in(1, 64))->capture_default_str();
+    c->add_flag("--only-models", [&s](std::int64_t) { s.samplers = false; }, "only the models against the path tracer");
+    c->add_flag("--no-models", [&s](std::int64_t) { s.compare_models = false; }, "only the samplers and the bake");
     c->add_option("--seed", s.seed, "random seed")->check(seed_value())->capture_default_str();
-    add(c, [this] { experiments::validate(render_); }, [this] { render_study_command(render_, render_out_); });
+    add(c, [this] { experiments::validate(render_settings()); },
+        [this] { render_study_command(render_settings(), render_out_); });
   }
 
   void add_path_depth(CLI::App* study) {
@@ -305,6 +359,10 @@ class StudyCommands : public CommandFamily {
 
   CdrfStudySettings cdrf_;
   std::string cdrf_out_ = "out/cdrf";
+  TranslucencyStudySettings translucency_;
+  std::string translucency_out_ = "out/translucency";
+  bool translucency_quick_ = false;
+  bool render_quick_ = false;
   RenderStudySettings render_;
   std::string render_out_ = "out/render-study";
   PathDepthSettings path_depth_;

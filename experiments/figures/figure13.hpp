@@ -1,14 +1,14 @@
-// Paper Figure 13: japonica grains soaked at 5 °C for five soak times, rendered with the CDRF
-// at each soak's water absorption (σ0 and albedo from the water-content model), side by side
-// under a high sun behind them, so that the wetter grains' wider scattering shows at the
-// terminator; the same row with the random-walk bake (each grain's subsurface light baked by
-// photons in its own medium, shading/subsurface_bake.hpp); and path-traced, the reference
-// (shading/path_tracer.hpp: light through and between the grains).
-// Writes figure13.png (the three rows, labelled), figure13_render.{png,exr} (CDRF),
-// figure13_reference.{png,exr} (the bake), figure13_path.{png,exr}, figure13.csv (per grain:
-// soak, W, σ0, albedo, mean radiance of its lit and shaded sides in each row, the CDRF's RMS
-// difference from the bake and from the path tracer) and run_info.txt (times, and the CIELAB
-// ΔE*ab between the driest and the wettest grain's lit and shaded sides as displayed, per row).
+// Paper Figure 13: japonica grains soaked at 5 °C for five soak times, side by side under a
+// high sun behind them, in three rows: the paper's CDRF at each soak's water absorption (σ0
+// and albedo from the water-content model), so that the wetter grains' wider scattering shows
+// at the terminator; the translucent model (the CDRF and the light through the grain,
+// shading/translucency.hpp) with its bounces between grains; and path-traced, the reference
+// (shading/path_tracer.hpp: light through and between the grains, each grain its medium).
+// Writes figure13.png (the three rows, labelled), figure13_<row>.{png,exr} for the rows cdrf,
+// translucent and path, figure13.csv (per grain: soak, W, σ0, albedo, and per row the mean
+// radiance of its lit and shaded sides and its RMS difference from the reference) and
+// run_info.txt (per row: time, the worst per-grain RMS, and the CIELAB ΔE*ab between the
+// driest and the wettest grain's lit and shaded sides as displayed).
 #pragma once
 
 #include <cstdint>
@@ -22,8 +22,8 @@ struct Figure13Settings {
   double temperature_c = 5.0;
   int width = 1000, height = 250;
   int samples_per_pixel = 64;
-  long long photons = 300'000;  ///< the bake: per grain, per light
   int path_spp = 256;           ///< the path-traced row's samples per pixel
+  int translucent_bounces = 1;  ///< of the translucent row
   std::uint64_t seed = 1;
 };
 

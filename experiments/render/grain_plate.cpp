@@ -42,7 +42,8 @@ void build_grain_plate(GrainPlate& plate, int grains, std::uint64_t seed, float 
   const Eigen::Vector3d centre(0.0, 0.5 * (rows - 1) * 0.6 * pitch, 1e-3);
   plate.camera.target = centre;
   plate.camera.vertical_fov_degrees = 30.0;
-  const double reach = 0.75 * columns * pitch / std::tan(15.0 * std::numbers::pi / 180.0);
+  // The grid fills the image's width (its horizontal half-angle at 4:3 is 19.7°).
+  const double reach = 0.42 * columns * pitch / std::tan(15.0 * std::numbers::pi / 180.0);
   plate.camera.position = centre + reach * Eigen::Vector3d(0.0, -std::cos(0.7), std::sin(0.7));
 }
 

@@ -18,15 +18,18 @@
 #include "experiments/render/framing_box.hpp"
 #include "experiments/render/run_frames.hpp"
 #include "experiments/render/scene_pieces.hpp"
+#include "experiments/render/translucency_tables.hpp"
 #include "grains/mesh_io.hpp"
 #include "shading/path_tracer.hpp"
 
 namespace rice::experiments {
 namespace {
 
-/// The materials by index: 0 the grains' rice, 1 the grey ground, 2 the dark glazed chawan.
-std::vector<shading::Material> materials_of(double absorption_percent) {
-  return {rice_material(absorption_percent),
+/// The materials by index: 0 the grains' rice (the translucent model's, or the paper's CDRF),
+/// 1 the grey ground, 2 the dark glazed chawan.
+std::vector<shading::Material> materials_of(double absorption_percent, RenderIntegrator integrator) {
+  return {integrator == RenderIntegrator::kTranslucent ? translucent_rice_material(absorption_percent)
+                                                       : rice_material(absorption_percent),
           {.kind = shading::MaterialKind::kDiffuse, .albedo = shading::Color::Constant(0.35f)},
           {.kind = shading::MaterialKind::kGlazed, .albedo = shading::Color(0.12f, 0.1f, 0.09f), .roughness = 0.08}};
 }
@@ -143,15 +146,19 @@ shading::Image integrate(const RenderCommandSettings& s, const RenderInputs& in,
   Progress progress("render: tiles", shading::tile_count(s.render));
   const auto update = [&](int done, int) { progress.update(done); };
   shading::Image image;
-  if (s.integrator == RenderIntegrator::kCdrf) {
+  if (s.integrator != RenderIntegrator::kPath && s.bounces == 0) {
     image = shading::render(scene, in.materials, in.lights, camera, in.cdrf, s.render, &stats, update, stop_requested);
   } else {
     const shading::RenderSettings& r = s.render;
+    const bool reference = s.integrator == RenderIntegrator::kPath;
+    shading::PathTraceSettings settings{.width = r.width, .height = r.height, .samples_per_pixel = r.samples_per_pixel,
+                                        .sampler = r.sampler, .seed = r.seed,
+                                        .max_depth = reference ? s.max_depth : 1 + s.bounces};
+    if (!reference) settings.cdrf = &in.cdrf;  // the grains' fast model, not their medium
+    std::vector<std::optional<shading::Medium>> media;
+    if (reference) media.push_back(grain_medium(s.absorption_percent));
     shading::PathTraceStats path;
-    image = shading::path_trace(scene, in.materials, {grain_medium(s.absorption_percent)}, in.lights, camera,
-                                {.width = r.width, .height = r.height, .samples_per_pixel = r.samples_per_pixel,
-                                 .sampler = r.sampler, .seed = r.seed, .max_depth = s.max_depth},
-                                &path, update, stop_requested);
+    image = shading::path_trace(scene, in.materials, media, in.lights, camera, settings, &path, update, stop_requested);
     stats = {path.paths, path.rays - path.paths, path.seconds};
   }
   progress.finish();
@@ -189,6 +196,15 @@ void render_image(const RenderCommandSettings& s, const RenderInputs& in, int k,
   totals.prototypes = scene.prototype_count();
 }
 
+std::string integrator_name(RenderIntegrator integrator) {
+  switch (integrator) {
+    case RenderIntegrator::kCdrf: return "cdrf";
+    case RenderIntegrator::kTranslucent: return "translucent";
+    case RenderIntegrator::kPath: return "path";
+  }
+  return "?";
+}
+
 std::string sampler_name(shading::SamplerKind kind) {
   return kind == shading::SamplerKind::kSobol ? "sobol" : kind == shading::SamplerKind::kStratified ? "stratified" : "independent";
 }
@@ -207,8 +223,9 @@ void write_render_info(const RenderCommandSettings& s, const RenderInputs& in, i
                                   {"prototypes", cell(totals.prototypes)},
                                   {"soft_instance_tolerance_m", cell(s.soft.instance_tolerance)},
                                   {"soft_grains_own_mesh", cell(totals.own_meshes)},
-                                  {"integrator", s.integrator == RenderIntegrator::kCdrf ? "cdrf" : "path"},
+                                  {"integrator", integrator_name(s.integrator)},
                                   {"max_depth", s.integrator == RenderIntegrator::kPath ? cell(s.max_depth) : "n/a"},
+                                  {"bounces", s.integrator == RenderIntegrator::kPath ? "n/a" : cell(s.bounces)},
                                   {"absorption_percent", cell(s.absorption_percent)},
                                   {"sigma0_m", cell(in.materials[0].sigma0)},
                                   {"width", cell(s.render.width)},
@@ -272,7 +289,7 @@ shading::Camera render_command(const RenderCommandSettings& settings, const std:
     inputs.frames = frames_to_render(settings);
     inputs.variants = read_run_variants(settings.run);
   }
-  inputs.materials = materials_of(settings.absorption_percent);
+  inputs.materials = materials_of(settings.absorption_percent, settings.integrator);
   inputs.lights = lights_of(settings);
   make_output_folder(folder);
 

@@ -1,8 +1,9 @@
 // `rice render`: renders grain meshes (the PLY/OBJ files of `rice grains`, or any closed
 // meshes) or a frame of a scene run (`rice run`: its rigid grains instanced from its variants,
 // its soft grains' render meshes carried by their simulation meshes, run_frames.hpp, and its
-// chawan, glazed) as cooked rice with the CDRF (paper §4.4), or with the reference path
-// tracer (shading/path_tracer.hpp: light through and between the grains, their medium at the
+// chawan, glazed) as cooked rice with the CDRF (paper §4.4), the translucent model (the CDRF
+// and the light through the grain), either with bounces of light between surfaces, or with
+// the reference path tracer (shading/path_tracer.hpp: light through and between the grains, their medium at the
 // water absorption W), on an optional ground, under a sun and a uniform or image sky, from a
 // camera given on the command line or framed automatically.
 // Writes render.png (tone mapped), render.exr (linear) — frame_NNNN.png and .exr for every
@@ -24,8 +25,9 @@
 namespace rice::experiments {
 
 enum class RenderIntegrator {
-  kCdrf,  ///< the paper's CDRF with direct light (shading/renderer.hpp)
-  kPath,  ///< the reference path tracer (shading/path_tracer.hpp)
+  kCdrf,         ///< the paper's CDRF (shading/renderer.hpp; with bounces, the path tracer's fast model)
+  kTranslucent,  ///< the CDRF with the light through the grain, τ(d, cos θ) (shading/translucency.hpp)
+  kPath,         ///< the reference path tracer (shading/path_tracer.hpp)
 };
 
 struct RenderCommandSettings {
@@ -36,6 +38,7 @@ struct RenderCommandSettings {
   shading::RenderSettings render;
   RenderIntegrator integrator = RenderIntegrator::kCdrf;
   int max_depth = 64;  ///< the path tracer's surface events per path
+  int bounces = 0;     ///< cdrf, translucent: bounces of light between surfaces (0: direct light)
   std::optional<shading::Camera> camera;  ///< none: framed on the meshes' bounds
   double sun_elevation_degrees = 50.0, sun_azimuth_degrees = -30.0;
   double sun_irradiance = 3.0;  ///< [W/m²-like units]; 0: no sun

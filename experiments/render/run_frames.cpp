@@ -13,6 +13,7 @@
 #include "grains/embedding.hpp"
 #include "grains/mesh_io.hpp"
 #include "shading/curvature.hpp"
+#include "shading/thickness.hpp"
 
 namespace rice::experiments {
 
@@ -53,6 +54,7 @@ RunVariants read_run_variants(const std::filesystem::path& run) {
   Progress progress("render: variants, curvature and embeddings", static_cast<int>(variants.meshes.size()));
   for (size_t k = 0; k < variants.meshes.size(); ++k) {
     variants.curvature.push_back(shading::vertex_mean_curvature(variants.meshes[k].V, variants.meshes[k].F));
+    variants.thickness.push_back(shading::vertex_thickness(variants.meshes[k].V, variants.meshes[k].F));
     if (!variants.simulation.empty())
       variants.embedding.push_back(grains::embed_points(variants.meshes[k].V, variants.simulation[k]));
     progress.update(static_cast<int>(k + 1));
@@ -93,9 +95,11 @@ class VariantPrototypes {
   VariantPrototypes(shading::RenderScene& scene, const RunVariants& variants)
       : scene_(scene), variants_(variants), index_(variants.meshes.size(), -1) {}
   int operator[](int variant) {
-    if (index_[variant] < 0)
+    if (index_[variant] < 0) {
       index_[variant] = scene_.add_prototype(variants_.meshes[variant].V, variants_.meshes[variant].F,
                                              variants_.curvature[variant]);
+      scene_.set_thickness(index_[variant], variants_.thickness[variant]);
+    }
     return index_[variant];
   }
 
@@ -169,8 +173,10 @@ int add_soft_grains(shading::RenderScene& scene, const NumericCsv& grains_csv, c
     const Eigen::VectorXd H = soft.curvature == SoftCurvature::kRest
                                   ? Eigen::VectorXd(variants.curvature[grain.variant] / grain.swell)
                                   : shading::vertex_mean_curvature(mesh.V, mesh.F);
-    scene.add_instance(scene.add_prototype(mesh.V, mesh.F, H, shading::RenderScene::Reuse::kSingle),
-                       Eigen::Affine3d::Identity(), 0);
+    const int own_prototype = scene.add_prototype(mesh.V, mesh.F, H, shading::RenderScene::Reuse::kSingle);
+    // The rest thickness, scaled by the swell: a grain at rest deforms by a few per cent.
+    scene.set_thickness(own_prototype, variants.thickness[grain.variant] * grain.swell);
+    scene.add_instance(own_prototype, Eigen::Affine3d::Identity(), 0);
     boxes.push_back(placed_box(mesh.V, Eigen::Affine3d::Identity()));
     ++own;
   }

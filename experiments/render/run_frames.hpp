@@ -50,6 +50,7 @@ struct SoftGrainDrawing {
 struct RunVariants {
   std::vector<grains::SurfaceMesh> meshes;
   std::vector<Eigen::VectorXd> curvature;
+  std::vector<Eigen::VectorXd> thickness;      ///< for the translucent model (shading/thickness.hpp)
   std::vector<grains::VolumeMesh> simulation;  ///< empty for a rigid run
   std::vector<grains::Embedding> embedding;
 };

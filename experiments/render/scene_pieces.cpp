@@ -7,6 +7,7 @@
 
 #include "grains/water_content.hpp"
 #include "shading/curvature.hpp"
+#include "shading/thickness.hpp"
 
 namespace rice::experiments {
 namespace {
@@ -29,7 +30,9 @@ shading::Medium grain_medium(double absorption_percent) {
 }
 
 int add_grain_prototype(shading::RenderScene& scene, const shading::MeshVertices& V, const shading::MeshTriangles& F) {
-  return scene.add_prototype(V, F, shading::vertex_mean_curvature(V, F));
+  const int prototype = scene.add_prototype(V, F, shading::vertex_mean_curvature(V, F));
+  scene.set_thickness(prototype, shading::vertex_thickness(V, F));
+  return prototype;
 }
 
 void add_ground(shading::RenderScene& scene, double x0, double y0, double x1, double y1, double z, int material) {

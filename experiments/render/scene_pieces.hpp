@@ -20,7 +20,8 @@ shading::Material rice_material(double absorption_percent);
 /// water-content model, isotropic scattering with μs = μs' (the similarity relation).
 shading::Medium grain_medium(double absorption_percent);
 
-/// Adds `V, F` as a prototype with its jet-fitted vertex curvature; returns its index.
+/// Adds `V, F` as a prototype with its jet-fitted vertex curvature and its thickness (for the
+/// translucent model); returns its index.
 int add_grain_prototype(shading::RenderScene& scene, const shading::MeshVertices& V, const shading::MeshTriangles& F);
 
 /// Adds the rectangle [x0, x1] × [y0, y1] at height z, facing +z (a ground, a plate, a

@@ -14,7 +14,9 @@
 #include "experiments/io/csv_table.hpp"
 #include "experiments/io/progress.hpp"
 #include "experiments/io/run_info.hpp"
+#include "experiments/render/grain_heap.hpp"
 #include "experiments/render/grain_plate.hpp"
+#include "experiments/studies/render_models.hpp"
 #include "experiments/render/scene_pieces.hpp"
 #include "shading/renderer.hpp"
 #include "experiments/io/render_images.hpp"
@@ -147,15 +149,25 @@ void validate(const RenderStudySettings& s) {
     if (n < 1000 || n > 1'000'000'000LL) throw std::invalid_argument("study render: --photons must be in [1000, 1e9]");
   if (s.bake_render_spp < 1 || s.bake_render_spp > 1 << 16)
     throw std::invalid_argument("study render: --bake-spp must be in [1, 65536]");
+  if (s.heap_grains < 1 || s.heap_grains > 100000) throw std::invalid_argument("study render: --heap-grains must be in [1, 100000]");
+  if (s.models.samples.empty()) throw std::invalid_argument("study render: give at least one --model-samples count");
+  for (const int n : s.models.samples)
+    if (n < 1 || n > 1 << 16) throw std::invalid_argument("study render: --model-samples counts must be in [1, 65536]");
+  if (s.models.reference_spp < 2) throw std::invalid_argument("study render: --path-reference-spp must be at least 2");
+  for (const int k : s.models.bounces)
+    if (k < 1 || k > 64) throw std::invalid_argument("study render: --bounces must be in [1, 64]");
+  if (!s.samplers && !s.compare_models) throw std::invalid_argument("study render: --only-models and --no-models exclude each other");
 }
 
-void render_study_command(const RenderStudySettings& settings, const std::filesystem::path& folder) {
-  validate(settings);
-  const auto start = std::chrono::steady_clock::now();
+namespace {
+
+using RunInfo = std::vector<std::pair<std::string, std::string>>;
+
+/// The samplers against a high-count CDRF image, and the CDRF against the random-walk bake.
+void study_samplers_and_bake(const RenderStudySettings& settings, const shading::CdrfTable& cdrf,
+                             const std::filesystem::path& folder, RunInfo& info) {
   GrainPlate plate;
   build_grain_plate(plate, settings.grains, settings.seed);
-  make_output_folder(folder);
-  const shading::CdrfTable cdrf(513, 513);
   const std::vector<shading::Material> materials = {
       rice_material(kAbsorption), {.kind = shading::MaterialKind::kDiffuse, .albedo = shading::Color::Constant(0.5f)}};
   const int runs = 1 + 3 * static_cast<int>(settings.samples.size()) + 2 * static_cast<int>(settings.photons.size()) + 1;
@@ -188,18 +200,68 @@ void render_study_command(const RenderStudySettings& settings, const std::filesy
 
   const double equal_spp = equal_error_spp(settings.samples, errors[0], errors[2]);
   plot_render_study(folder, settings.samples.back(), equal_spp, cdrf_error / mean);
-  write_file_atomically(folder / "run_info.txt",
-                        run_info({{"study", "render"},
-                                  {"width", cell(settings.width)},
-                                  {"height", cell(settings.height)},
-                                  {"grains", cell(settings.grains)},
-                                  {"reference_spp", cell(settings.reference_spp)},
-                                  {"equal_error_sobol_spp", cell(equal_spp)},
-                                  {"cdrf_vs_random_walk_relative_rmse", cell(cdrf_error / mean)},
-                                  {"seed", cell(static_cast<long>(settings.seed))},
-                                  {"wall_s", cell(seconds_since(start))}}));
+  info.insert(info.end(), {{"reference_spp", cell(settings.reference_spp)},
+                           {"equal_error_sobol_spp", cell(equal_spp)},
+                           {"cdrf_vs_random_walk_relative_rmse", cell(cdrf_error / mean)}});
   std::printf("study render: Sobol matches %d independent samples at %.0f; CDRF vs random walk %.1f%% RMS\n",
               settings.samples.back(), equal_spp, 100 * cdrf_error / mean);
+}
+
+/// Every model against the path-traced reference on the plate and the heap.
+void study_models(const RenderStudySettings& settings, const shading::CdrfTable& cdrf,
+                  const std::filesystem::path& folder, RunInfo& info) {
+  RenderModelSettings models = settings.models;
+  models.width = settings.width;
+  models.height = settings.height;
+  models.seed = settings.seed;
+  models.absorption_percent = kAbsorption;
+  Progress progress("study render: models", 2 * render_model_runs(models));
+  int done = 0;
+  const auto tick = [&] { progress.update(++done); };
+  CsvTable table({"scene", "model", "spp", "seconds", "rmse", "relative_rmse"});
+  std::vector<std::pair<std::string, RenderModelScene>> found;
+  {
+    GrainPlate plate;
+    build_grain_plate(plate, settings.grains, settings.seed);
+    found.emplace_back("plate", compare_render_models(plate, "plate", models, cdrf, folder, table, tick));
+  }
+  {
+    GrainPlate heap;
+    build_grain_heap(heap, settings.heap_grains, settings.seed);
+    found.emplace_back("heap", compare_render_models(heap, "heap", models, cdrf, folder, table, tick));
+  }
+  progress.finish();
+  write_file_atomically(folder / "render_models.csv", table.text());
+  for (const auto& [name, f] : found) {
+    plot_render_models(folder, name, f, models.bounces);
+    info.insert(info.end(), {{name + "_reference_s", cell(f.reference_seconds)},
+                             {name + "_reference_noise", cell(f.reference_noise)},
+                             {name + "_best_model", f.best_model},
+                             {name + "_best_relative_rms", cell(f.best_relative_rms)},
+                             {name + "_best_s", cell(f.best_seconds)}});
+    std::printf("study render: %s: best %s, %.1f%% RMS in %.1f s (the reference %.0f s, noise %.1f%%)\n", name.c_str(),
+                f.best_model.c_str(), 100 * f.best_relative_rms, f.best_seconds, f.reference_seconds,
+                100 * f.reference_noise);
+  }
+}
+
+}  // namespace
+
+void render_study_command(const RenderStudySettings& settings, const std::filesystem::path& folder) {
+  validate(settings);
+  const auto start = std::chrono::steady_clock::now();
+  make_output_folder(folder);
+  const shading::CdrfTable cdrf(513, 513);
+  RunInfo info = {{"study", "render"},
+                  {"width", cell(settings.width)},
+                  {"height", cell(settings.height)},
+                  {"grains", cell(settings.grains)},
+                  {"heap_grains", cell(settings.heap_grains)},
+                  {"seed", cell(static_cast<long>(settings.seed))}};
+  if (settings.samplers) study_samplers_and_bake(settings, cdrf, folder, info);
+  if (settings.compare_models) study_models(settings, cdrf, folder, info);
+  info.emplace_back("wall_s", cell(seconds_since(start)));
+  write_file_atomically(folder / "run_info.txt", run_info(info));
 }
 
 }  // namespace rice::experiments

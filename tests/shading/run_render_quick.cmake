@@ -1,5 +1,5 @@
 # `rice render` (meshes, a run's every frame and its video, the path tracer), `rice figure 13`,
-# `rice study cdrf` and `rice study path-depth` end to end at toy sizes: each writes its files;
+# `rice study cdrf`, `translucency`, `render` and `path-depth` end to end at toy sizes: each writes its files;
 # the same seed renders the same EXR twice; a missing mesh exits non-zero and leaves no folder.
 # Called by CTest with -DRICE=<rice binary> -DOUT=<scratch folder> -DSCENES=<experiments/scenes>.
 file(REMOVE_RECURSE "${OUT}")
@@ -45,15 +45,19 @@ execute_process(COMMAND ffprobe -v error -select_streams v:0 -count_frames
 if(NOT probed EQUAL 0 OR NOT probe STREQUAL "h264,yuv420p,4")
   message(FATAL_ERROR "render.mp4: ffprobe says '${probe}' (exit ${probed}), not h264,yuv420p,4")
 endif()
-run(figure 13 --width 120 --height 40 --spp 2 --photons 2000 --path-spp 2 --out "${OUT}/figure13")
-expect_files("${OUT}/figure13" figure13_render.png figure13_reference.exr figure13_path.exr figure13.csv run_info.txt)
-file(STRINGS "${OUT}/figure13/run_info.txt" delta_e REGEX "^delta_e_driest_wettest_(lit|shaded): [0-9.e+-]+$")
+run(figure 13 --width 120 --height 40 --spp 2 --path-spp 2 --out "${OUT}/figure13")
+expect_files("${OUT}/figure13" figure13_cdrf.png figure13_translucent.exr figure13_path.exr figure13.csv run_info.txt)
+file(STRINGS "${OUT}/figure13/run_info.txt" delta_e REGEX "^(cdrf|translucent|path)_delta_e_driest_wettest_(lit|shaded): [0-9.e+-]+$")
 list(LENGTH delta_e found)
-if(NOT found EQUAL 2)
-  message(FATAL_ERROR "figure 13's run_info.txt lacks the Delta E of the lit and shaded sides")
+if(NOT found EQUAL 6)
+  message(FATAL_ERROR "figure 13's run_info.txt lacks a row's Delta E of the lit and shaded sides")
 endif()
 run(study cdrf --photons 2000 --grain-photons 2000 --radii-mm 1 2 --soak-minutes 15 120 --out "${OUT}/cdrf")
 expect_files("${OUT}/cdrf" cdrf_fit.csv cdrf_profiles.csv grain_profiles.csv run_info.txt)
+run(study translucency --quick --out "${OUT}/translucency")
+expect_files("${OUT}/translucency" translucency_fit.csv translucency_table.csv run_info.txt)
+run(study render --quick --out "${OUT}/render-study")
+expect_files("${OUT}/render-study" render_models.csv plate_reference.exr heap_translucent+2.png run_info.txt)
 run(study path-depth --quick --out "${OUT}/path-depth")
 expect_files("${OUT}/path-depth" path_depth.csv reference.exr reference.png cdrf.png run_info.txt)
 file(STRINGS "${OUT}/path-depth/path_depth.csv" rows)

@@ -63,6 +63,18 @@ inline TestMesh ellipsoid(int subdivisions, double a, double b, double c) {
   return mesh;
 }
 
+/// A sphere of radius `outer` with a closed spherical pore of radius `inner` at its centre:
+/// the pore's triangles turned so that every normal points out of the material (into the
+/// pore). Icospheres of `subdivisions`.
+inline TestMesh hollow_sphere(int subdivisions, double outer, double inner) {
+  const TestMesh shell = icosphere(subdivisions);
+  TestMesh mesh{MeshVertices(2 * shell.V.rows(), 3), MeshTriangles(2 * shell.F.rows(), 3)};
+  mesh.V << outer * shell.V, inner * shell.V;
+  const MeshTriangles reversed = shell.F.rowwise().reverse();
+  mesh.F << shell.F, reversed.array() + static_cast<int>(shell.V.rows());
+  return mesh;
+}
+
 /// Mean curvature of the ellipsoid x²/a² + y²/b² + z²/c² = 1 at a point on it,
 ///   H = (a² + b² + c² − |p|²) / (2 a² b² c² (x²/a⁴ + y²/b⁴ + z²/c⁴)^{3/2}),
 /// positive (the outward normal points away from the centre of curvature).

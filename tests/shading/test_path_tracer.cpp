@@ -4,6 +4,7 @@
 // falls as 1/√N, the same image on any thread count; and the one-instance ray query the walks
 // inside grains use.
 #include "shading/path_tracer.hpp"
+#include "shading/renderer.hpp"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -220,6 +221,62 @@ TEST(PathTracer, RefusesBadSettingsAndMedia) {
                std::invalid_argument);
   EXPECT_THROW(path_trace(spheres.scene, materials, {Medium{100.0, 0.0, 1.0, 1.3}}, lights, camera, {}),
                std::invalid_argument);
+}
+
+// The fast model in the path tracer (a rice material without a medium, a CDRF table given):
+// with one surface event a path gathers the suns by shadow rays and the sky by its bounce,
+// which is the direct-light renderer's estimate of the same light, so the two agree within
+// noise. A second event adds the light the spheres and the ground pass each other.
+TEST(PathTracer, FastRiceAtDepthOneIsTheDirectRenderer) {
+  RenderScene scene;
+  const auto mesh = test_support::icosphere(3);
+  const int prototype = scene.add_prototype(mesh.V, mesh.F, Eigen::VectorXd::Constant(mesh.V.rows(), 1.0));
+  scene.set_thickness(prototype, Eigen::VectorXd::Constant(mesh.V.rows(), 2.0));
+  for (const int k : {-1, 0, 1}) add_grain_sphere(scene, prototype, Eigen::Vector3d(2.1 * kSphereRadius * k, 0, 0), 0);
+  test_support::TestMesh ground{MeshVertices(4, 3), MeshTriangles(2, 3)};
+  ground.V << -0.01, -0.01, -kSphereRadius, 0.01, -0.01, -kSphereRadius, 0.01, 0.01, -kSphereRadius, -0.01, 0.01,
+      -kSphereRadius;
+  ground.F << 0, 1, 2, 0, 2, 3;
+  scene.add_instance(scene.add_prototype(ground.V, ground.F), Eigen::Affine3d::Identity(), 1);
+  scene.commit();
+  std::vector<Material> materials = {{.kind = MaterialKind::kRice, .albedo = Color::Constant(0.75f), .sigma0 = 2e-4,
+                                      .refractive_index = 1.4, .roughness = 0.25},
+                                     {.kind = MaterialKind::kDiffuse, .albedo = Color::Constant(0.5f)}};
+  materials[0].translucency =
+      std::make_shared<TranslucencyTable>(4e-3, 2, 3, std::vector<double>{0.0, 0.1, 0.0, 0.2, 0.1, 0.0});
+  Lights lights = sky_of(0.3f);
+  lights.suns.push_back({.direction = {0.5f, 0.2f, 0.8f}, .irradiance = Color::Constant(2.0f)});
+  const CdrfTable cdrf(129, 65);
+  const Camera camera = test_support::looking_down(0.02, 20.0);
+  const Image direct = render(scene, materials, lights, camera, cdrf, {.width = 32, .height = 24, .samples_per_pixel = 256});
+  PathTraceSettings settings{.width = 32, .height = 24, .samples_per_pixel = 256, .max_depth = 1};
+  settings.cdrf = &cdrf;
+  const double one_event = mean_of(path_trace(scene, materials, {}, lights, camera, settings));
+  EXPECT_NEAR(one_event / mean_of(direct), 1.0, 0.02);
+  settings.max_depth = 2;
+  const double two_events = mean_of(path_trace(scene, materials, {}, lights, camera, settings));
+  EXPECT_GT(two_events, 1.03 * one_event);
+}
+
+// The suns' glints by the material's GGX lobe and shadow rays carry about the light the
+// smooth surface reflects from a wide sun (whose disc paths meet often enough to count). Under
+// the real sun (0.27° across) they carry the same light, which the smooth surface sends only
+// along the rare path that meets the disc (about one in millions: in `rice study render` they
+// were fireflies whose RMS was twice the image's mean radiance at 512 samples).
+TEST(PathTracer, RoughSunGlintsCarryTheSmoothSurfacesLightWithoutFireflies) {
+  ThreeSpheres spheres;
+  const std::vector<Material> materials = {{.kind = MaterialKind::kRice, .roughness = 0.25}};
+  const std::vector<std::optional<Medium>> media = {Medium{4000.0, 10.0, 0.0, 1.4}};
+  const auto image = [&](bool rough, float sun_radius, std::uint64_t seed) {
+    Lights lights;
+    lights.suns.push_back({.direction = {0.3f, 0.1f, 1.0f}, .angular_radius = sun_radius, .irradiance = Color::Constant(2.0f)});
+    PathTraceSettings settings{.width = 24, .height = 16, .samples_per_pixel = 256, .seed = seed};
+    settings.rough_sun_glints = rough;
+    return path_trace(spheres.scene, materials, media, lights, test_support::looking_down(0.02, 25.0), settings);
+  };
+  const double wide = mean_of(image(true, 0.15f, 1));
+  EXPECT_NEAR(wide / mean_of(image(false, 0.15f, 1)), 1.0, 0.05);
+  EXPECT_NEAR(mean_of(image(true, 0.00465f, 1)) / wide, 1.0, 0.03);
 }
 
 // A ray from inside one sphere meets that sphere's surface, not the one in front of it.
