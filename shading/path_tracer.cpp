@@ -301,15 +301,18 @@ Color fast_rice_direct(const PathContext& c, const ShadingPoint& hit, const Mate
 
 /// The next direction from a fast-rice point and its weight f cos / (lobe probability · pdf):
 /// the specular lobe with probability kSpecular, else the diffuse response, sampled by a
-/// cosine about n (probability kFront) or about −n (light through the grain; the CDRF also
-/// reaches past the terminator). Zero weight: the path ends.
+/// cosine about n (kFront), a cosine about −n (light through the grain; the CDRF also reaches
+/// past the terminator) or uniformly over the sphere (kUniform), one pdf for the three. The
+/// uniform part bounds the weight where the response stays positive as |cos θ| → 0 (the CDRF's
+/// wrap, τ at the terminator); without it those grazing samples were fireflies on Figure 13's
+/// grains. Zero weight: the path ends.
 struct FastBounce {
   Vector3f direction;
   Color weight = Color::Zero();
 };
 FastBounce fast_rice_bounce(const PathContext& c, const ShadingPoint& hit, const Material& m, const Vector3f& n,
                             const Vector3f& wo, PathSampler& sampler) {
-  constexpr double kSpecular = 0.1, kFront = 0.75;
+  constexpr double kSpecular = 0.1, kUniform = 0.1, kFront = 0.75 * (1.0 - kUniform);
   const auto [lobe, u] = sampler.pair();
   const auto [a, b] = sampler.pair();
   FastBounce next;
@@ -318,11 +321,11 @@ FastBounce fast_rice_bounce(const PathContext& c, const ShadingPoint& hit, const
     next.weight = Color::Constant(static_cast<float>(w / kSpecular));
     return next;
   }
-  const bool front = u < kFront;
-  next.direction = cosine_direction(front ? n : Vector3f(-n), a, b);
+  if (u < kUniform) next.direction = Environment::direction(a, b).cast<float>();
+  else next.direction = cosine_direction(u < kUniform + kFront ? n : Vector3f(-n), a, b);
   const double cos_i = n.dot(next.direction);
-  const double pdf = (cos_i > 0.0 ? kFront * cos_i : (1.0 - kFront) * -cos_i) / std::numbers::pi;
-  if (!(pdf > 0.0)) return next;
+  const double pdf = kUniform / (4.0 * std::numbers::pi) +
+                     (cos_i > 0.0 ? kFront * cos_i : (1.0 - kUniform - kFront) * -cos_i) / std::numbers::pi;
   const Color f = diffuse_term(m, *c.settings.cdrf, n, wo, next.direction, hit.curvature, hit.thickness);
   next.weight = f / static_cast<float>((1.0 - kSpecular) * pdf);
   return next;

@@ -236,7 +236,7 @@ unset border
 unset tics
 unset key
 set margins 0, 0, 0, 3
-)" + range + labels + "set title 'the paper\\'s CDRF" + rms(m[0]) + R"('
+)" + range + labels + "set title 'the CDRF of the paper" + rms(m[0]) + R"('
 plot 'figure13_cdrf.png' binary filetype=png with rgbimage
 set title 'translucent model, )" + std::to_string(settings.translucent_bounces) + " bounce(s)" + rms(m[1]) + R"('
 plot 'figure13_translucent.png' binary filetype=png with rgbimage

@@ -27,6 +27,7 @@
 #include "shading/random_walk.hpp"
 #include "shading/sigma0_fit.hpp"
 #include "shading/subsurface_bake.hpp"
+#include "shading/thickness.hpp"
 
 namespace rice::experiments {
 namespace {
@@ -101,10 +102,13 @@ GrainCheck check_on_grain(const WaterContentFit& fit, const shading::MeshVertice
                                                          {.photons_per_light = photons, .seed = seed}, &stats)[0];
   // Bins: 12 in cos θ, 4 in κ (quartiles of the convex vertices; concave ones in the first).
   const shading::MeshVertices N = shading::vertex_normals(V, F);
-  const std::vector<double> area = scene.vertex_areas(0);
+  std::vector<double> area = scene.vertex_areas(0);
+  const std::vector<bool> outer = shading::vertex_sees_out(V, F);
+  for (std::size_t v = 0; v < area.size(); ++v)
+    if (!outer[v]) area[v] = 0.0;  // the walls of pores inside: nobody sees them, and the bake leaves them dark
   std::vector<double> convex;
   for (Eigen::Index v = 0; v < V.rows(); ++v)
-    if (kappa(v) > 0.0) convex.push_back(kappa(v));
+    if (outer[v] && kappa(v) > 0.0) convex.push_back(kappa(v));
   std::sort(convex.begin(), convex.end());
   const auto quantile = [&](double q) { return convex.empty() ? 0.0 : convex[static_cast<size_t>(q * (convex.size() - 1))]; };
   const std::array<double, 3> edges = {quantile(0.25), quantile(0.5), quantile(0.75)};
