@@ -2,6 +2,7 @@
 #include "experiments/render/grain_heap.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -28,11 +29,12 @@ class HeightField {
   }
 
  private:
-  long long key(double x, double y) const {
-    return (static_cast<long long>(std::floor(x / cell_)) << 32) ^ (static_cast<long long>(std::floor(y / cell_)) & 0xffffffffLL);
+  std::uint64_t key(double x, double y) const {  // the two cell indices, 32 bits each (wrapping)
+    const auto index = [&](double t) { return static_cast<std::uint32_t>(static_cast<std::int64_t>(std::floor(t / cell_))); };
+    return (static_cast<std::uint64_t>(index(x)) << 32) | index(y);
   }
   double cell_;
-  std::unordered_map<long long, double> heights_;
+  std::unordered_map<std::uint64_t, double> heights_;
 };
 
 /// The lowest centre height at which the mesh P (rotated, centred at x, y) lies wholly above
