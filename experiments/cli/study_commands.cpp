@@ -106,7 +106,7 @@ class StudyCommands : public CommandFamily {
         study->add_subcommand("render", "image error against time: samplers, and the CDRF against the random walk");
     RenderStudySettings& s = render_;
     c->add_option("--out", render_out_, "output folder")->capture_default_str();
-    c->add_flag("--quick", render_quick_, "toy sizes, seconds (the other options ignored)");
+    c->add_flag("--quick", render_quick_, "the models only, at toy sizes: seconds (the other options ignored)");
     c->add_option("--width", s.width, "pixels")->check(number_in(8, 4096))->capture_default_str();
     c->add_option("--height", s.height, "pixels")->check(number_in(8, 4096))->capture_default_str();
     c->add_option("--grains", s.grains, "grains on the plate")->check(number_in(1, 10000))->capture_default_str();

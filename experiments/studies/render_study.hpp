@@ -39,9 +39,10 @@ struct RenderStudySettings {
   int heap_grains = 200;
   RenderModelSettings models;  ///< its samples and reference_spp (size and seed are the study's)
 
-  /// Toy sizes for the test suite: seconds.
+  /// Toy sizes for the test suite, the models only: seconds.
   static RenderStudySettings quick() {
     RenderStudySettings s;
+    s.samplers = false;
     s.width = 32;
     s.height = 24;
     s.grains = 6;
