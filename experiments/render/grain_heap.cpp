@@ -9,8 +9,6 @@
 #include <unordered_map>
 
 #include "experiments/render/scene_pieces.hpp"
-#include "grains/cultivar.hpp"
-#include "grains/grain_generator.hpp"
 
 namespace rice::experiments {
 namespace {
@@ -78,17 +76,8 @@ Eigen::Vector3d drop(HeightField& field, const shading::MeshVertices& V, const E
 }  // namespace
 
 void build_grain_heap(GrainPlate& heap, int grains, std::uint64_t seed) {
-  grains::GrainRecipe recipe;
-  recipe.cultivar = grains::cultivar_by_name("japonica");
-  std::vector<int> prototypes;
-  std::vector<shading::MeshVertices> meshes;
-  double length = 0.0;
-  for (int k = 0; k < 4; ++k) {
-    const grains::Grain grain = grains::make_grain(recipe, seed * 101 + k, 1.0);
-    prototypes.push_back(add_grain_prototype(heap.scene, grain.render.V, grain.render.F));
-    meshes.push_back(grain.render.V);
-    length = std::max(length, (grain.render.V.colwise().maxCoeff() - grain.render.V.colwise().minCoeff()).maxCoeff());
-  }
+  const GrainVariants variants = add_grain_variants(heap.scene, seed);
+  const std::vector<int>& prototypes = variants.prototypes;
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::normal_distribution<double> spread(0.0, 1.0);
@@ -104,7 +93,7 @@ void build_grain_heap(GrainPlate& heap, int grains, std::uint64_t seed) {
                                Eigen::AngleAxisd(0.6 * (unit(rng) - 0.5), Eigen::Vector3d::UnitY()))
                                   .toRotationMatrix();
     const int variant = g % static_cast<int>(prototypes.size());
-    const Eigen::Vector3d centre = drop(field, meshes[variant], R, x, y, length);
+    const Eigen::Vector3d centre = drop(field, variants.meshes[variant], R, x, y, variants.length);
     top = std::max(top, centre.z());
     reach_out.push_back(centre.head<2>().norm());
     Eigen::Affine3d place = Eigen::Affine3d::Identity();
@@ -114,8 +103,7 @@ void build_grain_heap(GrainPlate& heap, int grains, std::uint64_t seed) {
   }
   add_ground(heap.scene, -0.1, -0.1, 0.1, 0.1, 0.0, 1);
   heap.scene.commit();
-  heap.lights.suns.push_back({.direction = Eigen::Vector3f(0.3f, 0.5f, 0.8f), .irradiance = shading::Color::Constant(3.0f)});
-  heap.lights.environment.constant = shading::Color::Constant(0.3f);
+  heap.lights = study_lights();
   // A crop: the heap's upper middle, as high as 0.6 of its radius (where 90% of its grains lie).
   std::sort(reach_out.begin(), reach_out.end());
   const double radius = reach_out[static_cast<std::size_t>(0.9 * (reach_out.size() - 1))];

@@ -12,16 +12,32 @@
 
 namespace rice::experiments {
 
-void build_grain_plate(GrainPlate& plate, int grains, std::uint64_t seed, float sun_angular_radius) {
+GrainVariants add_grain_variants(shading::RenderScene& scene, std::uint64_t seed) {
   grains::GrainRecipe recipe;
   recipe.cultivar = grains::cultivar_by_name("japonica");
-  std::vector<int> prototypes;
-  double length = 0.0;
+  GrainVariants v;
   for (int k = 0; k < 4; ++k) {
     const grains::Grain grain = grains::make_grain(recipe, seed * 101 + k, 1.0);
-    prototypes.push_back(add_grain_prototype(plate.scene, grain.render.V, grain.render.F));
-    length = std::max(length, (grain.render.V.colwise().maxCoeff() - grain.render.V.colwise().minCoeff()).maxCoeff());
+    v.prototypes.push_back(add_grain_prototype(scene, grain.render.V, grain.render.F));
+    v.meshes.push_back(grain.render.V);
+    v.length = std::max(v.length, (grain.render.V.colwise().maxCoeff() - grain.render.V.colwise().minCoeff()).maxCoeff());
   }
+  return v;
+}
+
+shading::Lights study_lights(float sun_angular_radius) {
+  shading::Lights lights;
+  lights.suns.push_back({.direction = Eigen::Vector3f(0.3f, 0.5f, 0.8f),
+                         .angular_radius = sun_angular_radius,
+                         .irradiance = shading::Color::Constant(3.0f)});
+  lights.environment.constant = shading::Color::Constant(0.3f);
+  return lights;
+}
+
+void build_grain_plate(GrainPlate& plate, int grains, std::uint64_t seed, float sun_angular_radius) {
+  const GrainVariants variants = add_grain_variants(plate.scene, seed);
+  const std::vector<int>& prototypes = variants.prototypes;
+  const double length = variants.length;
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const int columns = static_cast<int>(std::ceil(std::sqrt(grains * 1.5)));
@@ -34,10 +50,7 @@ void build_grain_plate(GrainPlate& plate, int grains, std::uint64_t seed, float 
   }
   add_ground(plate.scene, -0.1, -0.1, 0.1, 0.1, 0.0, 1);
   plate.scene.commit();
-  plate.lights.suns.push_back({.direction = Eigen::Vector3f(0.3f, 0.5f, 0.8f),
-                               .angular_radius = sun_angular_radius,
-                               .irradiance = shading::Color::Constant(3.0f)});
-  plate.lights.environment.constant = shading::Color::Constant(0.3f);
+  plate.lights = study_lights(sun_angular_radius);
   const double rows = std::ceil(static_cast<double>(grains) / columns);
   const Eigen::Vector3d centre(0.0, 0.5 * (rows - 1) * 0.6 * pitch, 1e-3);
   plate.camera.target = centre;
