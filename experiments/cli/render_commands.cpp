@@ -55,7 +55,7 @@ class RenderCommands : public CommandFamily {
     c->add_flag("--no-shadows", no_shadows_, "lights are not blocked");
     c->add_flag("--no-ao", no_ao_, "the sky is not blocked (no ambient occlusion)");
     c->add_flag("--no-ground", no_ground_, "no grey plane under the meshes");
-    c->add_flag("--side-by-side", side_by_side_, "lay the meshes out in a row along x");
+    c->add_flag("--side-by-side", side_by_side_, "lay the meshes out side by side on a grid");
     c->add_option("--exposure", render_.exposure, "stops, for the PNG")->check(number_in(-30, 30))->capture_default_str();
   }
 

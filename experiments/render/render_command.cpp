@@ -84,24 +84,36 @@ shading::Lights lights_of(const RenderCommandSettings& s) {
   return lights;
 }
 
-/// The meshes given, each its own prototype: in place, or side by side along x.
+/// Where mesh i of n goes side by side: centred in cell i of a grid about √(1.5 n) cells
+/// wide (a row of ten grains framed was a thin line across the image), on the ground (z = 0).
+Eigen::Affine3d grid_place(const grains::Vertices& V, int i, int n, const Eigen::Vector2d& cell) {
+  const int columns = static_cast<int>(std::ceil(std::sqrt(1.5 * n)));
+  const Eigen::Vector3d lo = V.colwise().minCoeff(), hi = V.colwise().maxCoeff();
+  const Eigen::Vector2d centre(cell.x() * (i % columns), -cell.y() * (i / columns));
+  Eigen::Affine3d place = Eigen::Affine3d::Identity();
+  place.translation() = Eigen::Vector3d(centre.x() - 0.5 * (lo.x() + hi.x()), centre.y() - 0.5 * (lo.y() + hi.y()), -lo.z());
+  return place;
+}
+
+/// The meshes given, each its own prototype: in place, or side by side on a grid.
 void add_mesh_files(shading::RenderScene& scene, const std::vector<std::filesystem::path>& files, bool side_by_side,
                     std::vector<Eigen::AlignedBox3d>& boxes) {
   Progress progress("render: meshes and curvature", static_cast<int>(files.size()));
-  double next_x = 0.0;  // side by side: the next mesh's left edge
-  for (size_t i = 0; i < files.size(); ++i) {
+  std::vector<grains::SurfaceMesh> meshes;
+  Eigen::Vector2d cell = Eigen::Vector2d::Zero();  // side by side: 1.15 × the largest extents
+  for (const auto& file : files) {
     stop_point();
-    grains::SurfaceMesh mesh = grains::read_surface_mesh(files[i]);
-    Eigen::Affine3d place = Eigen::Affine3d::Identity();
-    if (side_by_side) {
-      const Eigen::Vector3d lo = mesh.V.colwise().minCoeff(), hi = mesh.V.colwise().maxCoeff();
-      place.translation() = Eigen::Vector3d(next_x - lo.x(), -0.5 * (lo.y() + hi.y()), -lo.z());
-      next_x += 1.15 * (hi.x() - lo.x());
-    }
+    const grains::SurfaceMesh& mesh = meshes.emplace_back(grains::read_surface_mesh(file));
+    cell = cell.cwiseMax(1.15 * (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).head<2>().transpose());
+  }
+  const int n = static_cast<int>(meshes.size());
+  for (int i = 0; i < n; ++i) {
+    const grains::SurfaceMesh& mesh = meshes[i];
+    const Eigen::Affine3d place = side_by_side ? grid_place(mesh.V, i, n, cell) : Eigen::Affine3d::Identity();
     scene.add_instance(add_grain_prototype(scene, mesh.V, mesh.F), place, 0);
     Eigen::AlignedBox3d& box = boxes.emplace_back();
     for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) box.extend(place * mesh.V.row(v).transpose());
-    progress.update(static_cast<int>(i + 1));
+    progress.update(i + 1);
   }
   progress.finish();
 }
@@ -181,8 +193,7 @@ void render_image(const RenderCommandSettings& s, const RenderInputs& in, int k,
   scene.commit();
   if (!camera) {
     const double aspect = static_cast<double>(s.render.width) / s.render.height;
-    camera = framing_camera(Eigen::AlignedBox3f(box.min().cast<float>(), box.max().cast<float>()), 35.0, -60.0, 30.0,
-                            aspect);
+    camera = framing_camera(box, 35.0, -60.0, 30.0, aspect);
   }
   shading::RenderStats stats;
   const shading::Image image = integrate(s, in, scene, *camera, stats);

@@ -47,7 +47,7 @@ struct RenderCommandSettings {
   double sky_radiance = 0.3;    ///< uniform sky; ignored with sky_image
   std::filesystem::path sky_image;  ///< latitude–longitude OpenEXR, z up
   bool ground = true;           ///< a grey plane under the meshes
-  bool side_by_side = false;    ///< each mesh centred on its own spot along x (`rice grains` output)
+  bool side_by_side = false;    ///< each mesh centred in its own cell of a grid (`rice grains` output)
   double exposure = 0.0;        ///< stops, PNG only
   /// A run's every frame, into frame_NNNN.png and .exr, with one camera: the given one or the
   /// last frame's framing. The variants' curvature and the CDRF table are made once.

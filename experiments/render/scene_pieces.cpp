@@ -48,17 +48,4 @@ Eigen::Vector3d direction_from(double elevation_degrees, double azimuth_degrees)
   return {std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e)};
 }
 
-shading::Camera framing_camera(const Eigen::AlignedBox3f& bounds, double elevation_degrees, double azimuth_degrees,
-                               double vertical_fov_degrees, double aspect) {
-  const Eigen::Vector3d centre = bounds.center().cast<double>();
-  const double radius = 0.5 * bounds.diagonal().norm();
-  const double half = 0.5 * vertical_fov_degrees * kDegree;
-  const double fit = std::min(std::tan(half), std::tan(half) * aspect);  // the narrower side
-  shading::Camera camera;
-  camera.target = centre;
-  camera.position = centre + direction_from(elevation_degrees, azimuth_degrees) * (1.05 * radius / std::sin(std::atan(fit)));
-  camera.vertical_fov_degrees = vertical_fov_degrees;
-  return camera;
-}
-
 }  // namespace rice::experiments

@@ -31,8 +31,4 @@ void add_ground(shading::RenderScene& scene, double x0, double y0, double x1, do
 /// The unit vector at the given elevation and azimuth (from +x towards +y) [degrees].
 Eigen::Vector3d direction_from(double elevation_degrees, double azimuth_degrees);
 
-/// A camera that frames `bounds` from the given elevation and azimuth [degrees].
-shading::Camera framing_camera(const Eigen::AlignedBox3f& bounds, double elevation_degrees, double azimuth_degrees,
-                               double vertical_fov_degrees, double aspect);
-
 }  // namespace rice::experiments

@@ -1,5 +1,6 @@
 // The box a render's default camera frames (experiments/render/framing_box.hpp): a heap's flank
-// stays in it, a grain thrown far off the heap does not, a few grains are all framed.
+// stays in it, a grain thrown far off the heap does not, a few grains are all framed; the
+// camera that frames a box sees all its corners and fills the image.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -50,6 +51,37 @@ TEST(FramingBox, AFewGrainsAreAllFramedAndNoneFrameNothing) {
   EXPECT_TRUE(framing_box(few).isApprox(union_of(few)));
   EXPECT_TRUE(framing_box({grain_at({0.1, 0.2, 0.3})}).isApprox(grain_at({0.1, 0.2, 0.3})));
   EXPECT_TRUE(framing_box({}).isEmpty());
+}
+
+/// The corners' film coordinates in [-1, 1]² when in the image: the lowest and highest on each axis.
+std::pair<Eigen::Vector2d, Eigen::Vector2d> film_extent(const shading::Camera& camera, const Eigen::AlignedBox3d& box,
+                                                        double aspect) {
+  const shading::Camera::Frame f = camera.frame(aspect);
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e300), hi = -lo;
+  for (int k = 0; k < 8; ++k) {
+    const Eigen::Vector3d q = box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(k)) - f.position;
+    const double depth = q.dot(f.forward);
+    const Eigen::Vector2d film(q.dot(f.right) / (f.right.squaredNorm() * depth), q.dot(f.up) / (f.up.squaredNorm() * depth));
+    lo = lo.cwiseMin(film);
+    hi = hi.cwiseMax(film);
+  }
+  return {lo, hi};
+}
+
+TEST(FramingCamera, SeesEveryCornerCentredAndFillsTheImage) {
+  // A row of grains 10 cm long and a cube; wide and tall images. The bounding sphere's fit
+  // left the row a thin line across half the width.
+  const std::vector<Eigen::AlignedBox3d> boxes = {{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.1, 0.004, 0.003)},
+                                                  {Eigen::Vector3d(-0.01, 0.02, 0), Eigen::Vector3d(0.01, 0.04, 0.02)}};
+  for (const auto& box : boxes)
+    for (const double aspect : {16.0 / 9.0, 0.75}) {
+      const auto [lo, hi] = film_extent(framing_camera(box, 35.0, -60.0, 30.0, aspect), box, aspect);
+      EXPECT_GE(lo.minCoeff(), -1.0);
+      EXPECT_LE(hi.maxCoeff(), 1.0);
+      EXPECT_NEAR((lo + hi).x(), 0.0, 0.02) << "left and right margins differ";
+      EXPECT_NEAR((lo + hi).y(), 0.0, 0.02) << "top and bottom margins differ";
+      EXPECT_GT((hi - lo).maxCoeff(), 2.0 / 1.05 - 0.01) << "the box fills neither the width nor the height";
+    }
 }
 
 }  // namespace
