@@ -91,4 +91,25 @@ Vertices apply_embedding(const Embedding& embedding, const Vertices& x, const Te
   return result;
 }
 
+Vertices carry_normals(const Embedding& embedding, const Vertices& N, const Vertices& X, const Vertices& x,
+                       const Tets& T) {
+  const auto edges = [&](const Vertices& P, int t) {
+    Eigen::Matrix3d D;
+    for (int k = 0; k < 3; ++k) D.col(k) = (P.row(T(t, k + 1)) - P.row(T(t, 0))).transpose();
+    return D;
+  };
+  std::vector<Eigen::Matrix3d> inverse_transpose(T.rows());  // F⁻ᵀ per tet, made when first needed
+  std::vector<char> made(T.rows(), 0);
+  Vertices result(N.rows(), 3);
+  for (Eigen::Index i = 0; i < N.rows(); ++i) {
+    const int t = embedding.tet[i];
+    if (!made[t]) {
+      inverse_transpose[t] = (edges(x, t) * edges(X, t).inverse()).inverse().transpose();
+      made[t] = 1;
+    }
+    result.row(i) = (inverse_transpose[t] * N.row(i).transpose()).normalized().transpose();
+  }
+  return result;
+}
+
 }  // namespace rice::grains

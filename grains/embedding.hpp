@@ -22,6 +22,14 @@ Embedding embed_points(const Vertices& points, const VolumeMesh& mesh);
 /// Render positions Σ_k w_k x_k for simulation positions `x` (#V by 3) and tets `T`.
 Vertices apply_embedding(const Embedding& embedding, const Vertices& x, const Tets& T);
 
+/// Render normals `N` (#V by 3, at the rest positions `X` of the simulation vertices) carried
+/// to the simulation positions `x`: in tet t, the map is affine with deformation gradient
+/// F = D_s D_m⁻¹ (D the edge matrices [x₁−x₀, x₂−x₀, x₃−x₀] deformed and at rest), and a normal
+/// maps by the cofactor, n′ ∝ F⁻ᵀ n (Nanson's formula), normalised. Exact for normals that are
+/// sums of area-weighted face normals (smoothed ones included) when the map is one affine map.
+Vertices carry_normals(const Embedding& embedding, const Vertices& N, const Vertices& X, const Vertices& x,
+                       const Tets& T);
+
 /// Barycentric coordinates of p in tet (a, b, c, d) (any sign; the tet must not be flat).
 Eigen::Vector4d barycentric_coordinates(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 

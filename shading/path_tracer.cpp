@@ -459,10 +459,11 @@ Image path_trace(const RenderScene& scene, const std::vector<Material>& material
   const auto start = std::chrono::steady_clock::now();
   PathContext context{scene, materials, media, lights, {}, settings};
   for (const Sun& sun : lights.suns) context.suns.push_back(sun.sampler());
-  Image image(settings.width, settings.height);
+  const PixelWindow window = rendered_pixels(settings.width, settings.height, settings.crop, "path_trace");
+  Image image(window.width(), window.height());
   const Camera::Frame frame = camera.frame(static_cast<double>(settings.width) / settings.height);
   std::atomic<long long> paths = 0, rays = 0, scatterings = 0, walks_cut = 0, walks_lost = 0;
-  for_each_tile(settings.width, settings.height, progress, cancelled, [&](int x0, int y0, int x1, int y1) {
+  for_each_tile(window, progress, cancelled, [&](int x0, int y0, int x1, int y1) {
     PathCounters counters;
     for (int y = y0; y < y1; ++y) {
       for (int x = x0; x < x1; ++x) {
@@ -476,7 +477,7 @@ Image path_trace(const RenderScene& scene, const std::vector<Material>& material
           PathSampler sampler{pixel, i};
           sum += trace(context, {cr.origin, cr.direction}, sampler, counters);
         }
-        image.at(x, y) = sum / static_cast<float>(settings.samples_per_pixel);
+        image.at(x - window.x0, y - window.y0) = sum / static_cast<float>(settings.samples_per_pixel);
       }
     }
     paths += counters.paths;

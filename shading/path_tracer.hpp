@@ -53,6 +53,7 @@
 #include "shading/material.hpp"
 #include "shading/random_walk.hpp"
 #include "shading/render_scene.hpp"
+#include "shading/image_tiles.hpp"
 #include "shading/sampler.hpp"
 
 namespace rice::shading {
@@ -75,6 +76,7 @@ struct PathTraceSettings {
   /// when set; material.hpp) instead of Lambertian, each bounce sampling its response. The
   /// table outlives the render.
   const CdrfTable* cdrf = nullptr;
+  PixelWindow crop{};  ///< render only these pixels, into an image of the crop's size (empty: all)
 };
 
 struct PathTraceStats {

@@ -110,7 +110,18 @@ void RenderScene::set_thickness(int prototype, const Eigen::VectorXd& thickness)
   p.thickness.assign(thickness.data(), thickness.data() + thickness.size());
 }
 
-int RenderScene::add_instance(int prototype, const Eigen::Affine3d& transform, int material) {
+void RenderScene::set_shading_normals(int prototype, const MeshVertices& N) {
+  if (committed_) throw std::logic_error("RenderScene: set_shading_normals after commit");
+  if (prototype < 0 || prototype >= prototype_count())
+    throw std::invalid_argument("RenderScene: no prototype " + std::to_string(prototype));
+  Prototype& p = *prototypes_[prototype];
+  if (N.rows() != static_cast<Eigen::Index>(p.normals.size()))
+    throw std::invalid_argument("RenderScene: " + std::to_string(N.rows()) + " normals for " +
+                                std::to_string(p.normals.size()) + " vertices");
+  for (Eigen::Index v = 0; v < N.rows(); ++v) p.normals[v] = N.row(v).transpose().cast<float>().normalized();
+}
+
+int RenderScene::add_instance(int prototype, const Eigen::Affine3d& transform, int material, int label) {
   if (committed_) throw std::logic_error("RenderScene: add_instance after commit");
   if (prototype < 0 || prototype >= prototype_count())
     throw std::invalid_argument("RenderScene: no prototype " + std::to_string(prototype));
@@ -123,6 +134,7 @@ int RenderScene::add_instance(int prototype, const Eigen::Affine3d& transform, i
   Instance instance;
   instance.prototype = prototype;
   instance.material = material;
+  instance.label = label;
   instance.linear = L.cast<float>();
   instance.inverse_linear = L.inverse().cast<float>();
   instance.normal_matrix = (L.inverse().transpose()).cast<float>();

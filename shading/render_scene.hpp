@@ -62,9 +62,16 @@ class RenderScene {
   /// std::invalid_argument for a wrong size or an unknown prototype.
   void set_thickness(int prototype, const Eigen::VectorXd& thickness);
 
+  /// Per-vertex shading normals of a prototype (#V by 3, unit, outward), interpolated in
+  /// place of its area-weighted vertex normals: normals smoothed at the scale light averages
+  /// over (smooth_normals.hpp). Call before commit; throws std::invalid_argument for a wrong
+  /// size or an unknown prototype.
+  void set_shading_normals(int prototype, const MeshVertices& N);
+
   /// Places a prototype: `transform` must be a rotation, a uniform scale and a translation
-  /// (curvature scales by 1/s); throws std::invalid_argument otherwise. Returns its index.
-  int add_instance(int prototype, const Eigen::Affine3d& transform, int material);
+  /// (curvature scales by 1/s); throws std::invalid_argument otherwise. `label` is the caller's
+  /// name for it (a grain's id; −1: none), written to the grain-id AOV. Returns its index.
+  int add_instance(int prototype, const Eigen::Affine3d& transform, int material, int label = -1);
 
   /// Builds Embree's hierarchies; call after the last add and before any query.
   void commit();
@@ -110,11 +117,12 @@ class RenderScene {
   int prototype_count() const { return static_cast<int>(prototypes_.size()); }
   int instance_count() const { return static_cast<int>(instances_.size()); }
   int material_of(int instance) const { return instances_.at(instance).material; }
+  int label_of(int instance) const { return instances_.at(instance).label; }
 
  private:
   struct Prototype;
   struct Instance {
-    int prototype = 0, material = 0;
+    int prototype = 0, material = 0, label = -1;
     Eigen::Matrix3f linear, inverse_linear, normal_matrix;
     Eigen::Vector3f translation;
     float curvature_scale = 1.0f;

@@ -183,12 +183,13 @@ Image render(const RenderScene& scene, const std::vector<Material>& materials, c
     throw std::invalid_argument("render: width, height and samples per pixel must be at least 1");
   check_instance_materials(scene, materials.size(), "render");
   const auto start = std::chrono::steady_clock::now();
-  Image image(settings.width, settings.height);
+  const PixelWindow window = rendered_pixels(settings.width, settings.height, settings.crop, "render");
+  Image image(window.width(), window.height());
   std::atomic<long long> camera_rays = 0, shadow_rays = 0;
   const Camera::Frame frame = camera.frame(static_cast<double>(settings.width) / settings.height);
   std::vector<Sun::Sampler> suns;
   for (const Sun& sun : lights.suns) suns.push_back(sun.sampler());
-  for_each_tile(settings.width, settings.height, progress, cancelled, [&](int x0, int y0, int x1, int y1) {
+  for_each_tile(window, progress, cancelled, [&](int x0, int y0, int x1, int y1) {
     Counters counters;
     Batch batch;
     for (int y = y0; y < y1; ++y) {
@@ -201,7 +202,7 @@ Image render(const RenderScene& scene, const std::vector<Material>& materials, c
           sum += shade_batch(scene, materials, lights, suns, cdrf, settings, frame, sampler, x, y, first, count, batch,
                              counters);
         }
-        image.at(x, y) = sum / static_cast<float>(settings.samples_per_pixel);
+        image.at(x - window.x0, y - window.y0) = sum / static_cast<float>(settings.samples_per_pixel);
       }
     }
     camera_rays += counters.camera;

@@ -31,6 +31,7 @@ struct RenderSettings {
   std::uint64_t seed = 1;
   bool shadows = true;
   bool ambient_occlusion = true;  ///< environment light is blocked by geometry
+  PixelWindow crop{};  ///< render only these pixels, into an image of the crop's size (empty: all)
 };
 
 /// Counters of one render.
@@ -40,7 +41,7 @@ struct RenderStats {
 };
 
 /// The image's tiles (image_tiles.hpp), the unit of work and of progress.
-inline int tile_count(const RenderSettings& s) { return tile_count(s.width, s.height); }
+inline int tile_count(const RenderSettings& s) { return tile_count(rendered_pixels(s.width, s.height, s.crop, "render")); }
 
 /// `progress(done, total)` is called after each tile, from the thread that rendered it; once
 /// `cancelled()` returns true no further tile starts (the image is then incomplete).

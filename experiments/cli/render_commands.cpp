@@ -4,6 +4,7 @@
 
 #include "experiments/cli/command_family.hpp"
 #include "experiments/cli/option_checks.hpp"
+#include "experiments/render/crop_merge.hpp"
 #include "experiments/render/render_command.hpp"
 
 namespace rice::experiments {
@@ -17,6 +18,7 @@ class RenderCommands : public CommandFamily {
     add_camera(c);
     add_lights(c);
     add(c, [this] { experiments::validate(settings()); }, [this] { render_command(settings(), out_); });
+    add_merge_crops(app);
   }
 
  private:
@@ -54,9 +56,15 @@ class RenderCommands : public CommandFamily {
         ->capture_default_str();
     c->add_flag("--no-shadows", no_shadows_, "lights are not blocked");
     c->add_flag("--no-ao", no_ao_, "the sky is not blocked (no ambient occlusion)");
-    c->add_flag("--no-ground", no_ground_, "no grey plane under the meshes");
+    c->add_flag("--no-ground", no_ground_, "no table and backdrop (studio), no grey plane (sun)");
     c->add_flag("--side-by-side", side_by_side_, "lay the meshes out side by side on a grid");
     c->add_option("--exposure", render_.exposure, "stops, for the PNG")->check(number_in(-30, 30))->capture_default_str();
+    c->add_option("--crop", crop_,
+                  "render only pixels x0 <= x < x1, y0 <= y < y1 of the frame (rice merge-crops joins the parts)")
+        ->expected(4)->check(number_in(0, 16384));
+    c->add_option("--shading-radius-mm", shading_radius_mm_,
+                  "grains' shading normals and curvature smoothed over this radius [mm] (0: the meshes' own)")
+        ->check(number_in(0, 10))->capture_default_str();
   }
 
   void add_camera(CLI::App* c) {
@@ -71,6 +79,13 @@ class RenderCommands : public CommandFamily {
   }
 
   void add_lights(CLI::App* c) {
+    c->add_option("--lighting", lighting_,
+                  "studio (a soft key and fill, a table and a backdrop) or sun (the sun, the sky and a grey ground)")
+        ->check(CLI::IsMember({"studio", "sun"}))->capture_default_str();
+    c->add_option("--key-irradiance", render_.studio.key_irradiance, "studio: the key light's irradiance at the subject")
+        ->check(number_in(0, 1e6))->capture_default_str();
+    c->add_option("--fill-ratio", render_.studio.fill_ratio, "studio: fill irradiance / key irradiance")
+        ->check(number_in(0, 10))->capture_default_str();
     c->add_option("--sun-elevation", render_.sun_elevation_degrees, "[degrees]")->check(number_in(-90, 90))
         ->capture_default_str();
     c->add_option("--sun-azimuth", render_.sun_azimuth_degrees, "[degrees] from +x towards +y")
@@ -85,6 +100,20 @@ class RenderCommands : public CommandFamily {
         ->expected(10)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)->check(number_in(-1e6, 1e6));
     c->add_option("--sky", render_.sky_radiance, "uniform sky radiance")->check(number_in(0, 1e6))->capture_default_str();
     c->add_option("--sky-image", sky_image_, "latitude-longitude OpenEXR sky, z up");
+  }
+
+  void add_merge_crops(CLI::App& app) {
+    CLI::App* c = app.add_subcommand("merge-crops", "the crops of a frame (rice render --crop) joined into the frame");
+    c->add_option("parts", merge_parts_, "output folders of rice render --crop")->required();
+    c->add_option("--out", merge_out_, "output folder")->capture_default_str();
+    c->add_option("--exposure", merge_.exposure, "stops, for the PNG")->check(number_in(-30, 30))->capture_default_str();
+    add(c, [this] { experiments::validate(merge_settings()); }, [this] { merge_crops_command(merge_settings(), merge_out_); });
+  }
+
+  MergeCropsSettings merge_settings() const {
+    MergeCropsSettings s = merge_;
+    s.parts.assign(merge_parts_.begin(), merge_parts_.end());
+    return s;
   }
 
   RenderCommandSettings settings() const {
@@ -103,6 +132,9 @@ class RenderCommands : public CommandFamily {
     s.side_by_side = side_by_side_;
     s.soft.curvature = deformed_curvature_ ? SoftCurvature::kDeformed : SoftCurvature::kRest;
     s.sky_image = sky_image_;
+    s.lighting = lighting_ == "sun" ? Lighting::kSun : Lighting::kStudio;
+    if (crop_.size() == 4) s.render.crop = {crop_[0], crop_[1], crop_[2], crop_[3]};
+    s.shading_radius = 1e-3 * shading_radius_mm_;
     for (size_t k = 0; k + 10 <= area_.size(); k += 10) {
       const auto& a = area_;
       s.area_lights.push_back({.corner = Eigen::Vector3f(a[k], a[k + 1], a[k + 2]),
@@ -123,10 +155,14 @@ class RenderCommands : public CommandFamily {
   }
 
   RenderCommandSettings render_;
-  std::string out_ = "out/render", sampler_ = "sobol", sky_image_, run_, integrator_ = "cdrf";
+  MergeCropsSettings merge_;
+  std::vector<std::string> merge_parts_;
+  std::string merge_out_ = "out/render";
+  std::string out_ = "out/render", sampler_ = "sobol", sky_image_, run_, integrator_ = "cdrf", lighting_ = "studio";
   std::vector<std::string> meshes_;
   std::vector<double> eye_, look_at_, area_;
-  double fov_ = 30.0, aperture_ = 0.0, focus_ = 0.0;
+  std::vector<int> crop_;
+  double fov_ = 30.0, aperture_ = 0.0, focus_ = 0.0, shading_radius_mm_ = 1e3 * kShadingRadius;
   bool no_shadows_ = false, no_ao_ = false, no_ground_ = false, side_by_side_ = false, deformed_curvature_ = false;
 };
 

@@ -80,7 +80,8 @@ class StudyCommands : public CommandFamily {
         ->capture_default_str();
     c->add_option("--smoothing", s.smoothing, "weight of the table's second differences")->check(number_in(0, 1e6))
         ->capture_default_str();
-    c->add_option("--normal-radius-mm", s.normal_radius_mm, "shading normals smoothed over this radius [mm]")
+    c->add_option("--shading-radius-mm", s.shading_radius_mm,
+                  "shading normals and curvature smoothed over this radius [mm] (0: the mesh's own)")
         ->check(number_in(0, 10))->capture_default_str();
     c->add_option("--curvature-rings", s.curvature_rings, "rings of the curvature's jet fit")->check(number_in(1, 20))
         ->capture_default_str();

@@ -18,6 +18,7 @@
 #include "experiments/render/framing_box.hpp"
 #include "experiments/render/run_frames.hpp"
 #include "experiments/render/scene_pieces.hpp"
+#include "experiments/render/studio_lighting.hpp"
 #include "experiments/render/translucency_tables.hpp"
 #include "grains/mesh_io.hpp"
 #include "shading/path_tracer.hpp"
@@ -26,12 +27,15 @@ namespace rice::experiments {
 namespace {
 
 /// The materials by index: 0 the grains' rice (the translucent model's, or the paper's CDRF),
-/// 1 the grey ground, 2 the dark glazed chawan.
+/// 1 the grey ground, 2 the dark glazed chawan, 3 the studio's table (a light linen), 4 its
+/// backdrop (a warm grey).
 std::vector<shading::Material> materials_of(double absorption_percent, RenderIntegrator integrator) {
   return {integrator == RenderIntegrator::kTranslucent ? translucent_rice_material(absorption_percent)
                                                        : rice_material(absorption_percent),
           {.kind = shading::MaterialKind::kDiffuse, .albedo = shading::Color::Constant(0.35f)},
-          {.kind = shading::MaterialKind::kGlazed, .albedo = shading::Color(0.12f, 0.1f, 0.09f), .roughness = 0.08}};
+          {.kind = shading::MaterialKind::kGlazed, .albedo = shading::Color(0.12f, 0.1f, 0.09f), .roughness = 0.08},
+          {.kind = shading::MaterialKind::kDiffuse, .albedo = shading::Color(0.42f, 0.37f, 0.31f)},
+          {.kind = shading::MaterialKind::kDiffuse, .albedo = shading::Color(0.3f, 0.29f, 0.27f)}};
 }
 
 std::vector<std::filesystem::path> mesh_files(const std::vector<std::filesystem::path>& inputs) {
@@ -96,7 +100,7 @@ Eigen::Affine3d grid_place(const grains::Vertices& V, int i, int n, const Eigen:
 }
 
 /// The meshes given, each its own prototype: in place, or side by side on a grid.
-void add_mesh_files(shading::RenderScene& scene, const std::vector<std::filesystem::path>& files, bool side_by_side,
+void add_mesh_files(shading::RenderScene& scene, const RenderCommandSettings& s, const std::vector<std::filesystem::path>& files,
                     std::vector<Eigen::AlignedBox3d>& boxes) {
   Progress progress("render: meshes and curvature", static_cast<int>(files.size()));
   std::vector<grains::SurfaceMesh> meshes;
@@ -109,8 +113,8 @@ void add_mesh_files(shading::RenderScene& scene, const std::vector<std::filesyst
   const int n = static_cast<int>(meshes.size());
   for (int i = 0; i < n; ++i) {
     const grains::SurfaceMesh& mesh = meshes[i];
-    const Eigen::Affine3d place = side_by_side ? grid_place(mesh.V, i, n, cell) : Eigen::Affine3d::Identity();
-    scene.add_instance(add_grain_prototype(scene, mesh.V, mesh.F), place, 0);
+    const Eigen::Affine3d place = s.side_by_side ? grid_place(mesh.V, i, n, cell) : Eigen::Affine3d::Identity();
+    scene.add_instance(add_grain_prototype(scene, mesh.V, mesh.F, s.shading_radius), place, 0, i);
     Eigen::AlignedBox3d& box = boxes.emplace_back();
     for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) box.extend(place * mesh.V.row(v).transpose());
     progress.update(i + 1);
@@ -118,22 +122,42 @@ void add_mesh_files(shading::RenderScene& scene, const std::vector<std::filesyst
   progress.finish();
 }
 
-/// A run's chawan, glazed, and the ground: a square four times the scene's extent, just under
-/// its lowest point. Returns the box of the grains and the bowl.
-Eigen::AlignedBox3d add_bowl_and_ground(shading::RenderScene& scene, const RenderCommandSettings& s,
-                                        const Eigen::AlignedBox3d& grains_box) {
+/// A run's chawan, glazed. Returns the box of the grains and the bowl.
+Eigen::AlignedBox3d add_bowl(shading::RenderScene& scene, const RenderCommandSettings& s,
+                             const Eigen::AlignedBox3d& grains_box) {
   Eigen::AlignedBox3d box = grains_box;
   if (!s.run.empty() && std::filesystem::exists(s.run / "chawan.obj")) {
     const grains::SurfaceMesh bowl = grains::read_surface_mesh(s.run / "chawan.obj");
     scene.add_instance(scene.add_prototype(bowl.V, bowl.F), Eigen::Affine3d::Identity(), 2);
     for (Eigen::Index v = 0; v < bowl.V.rows(); ++v) box.extend(bowl.V.row(v).transpose());
   }
-  if (s.ground) {
-    const double half = 2.0 * box.diagonal().head<2>().maxCoeff() + 1e-3, z = box.min().z() - 1e-6;
-    const Eigen::Vector2d c = box.center().head<2>();
-    add_ground(scene, c.x() - half, c.y() - half, c.x() + half, c.y() + half, z, 1);
-  }
   return box;
+}
+
+/// What every image of one command is seen and lit by, set by the first image rendered (a
+/// run's last frame): the camera, the subject it frames and the lights.
+struct Stage {
+  shading::Camera camera;
+  Eigen::AlignedBox3d subject;
+  shading::Lights lights;
+};
+
+Stage stage_for(const RenderCommandSettings& s, const Eigen::AlignedBox3d& subject) {
+  const double aspect = static_cast<double>(s.render.width) / s.render.height;
+  Stage stage{s.camera ? *s.camera : framing_camera(subject, 35.0, -60.0, 30.0, aspect), subject, {}};
+  stage.lights = s.lighting == Lighting::kStudio ? studio_lights(subject, stage.camera.position, s.studio) : lights_of(s);
+  return stage;
+}
+
+/// Under the subject: the studio's table and backdrop, or a grey ground a square four times
+/// the subject's extent, just under its lowest point.
+void add_set(shading::RenderScene& scene, const RenderCommandSettings& s, const Stage& stage) {
+  if (!s.ground) return;
+  if (s.lighting == Lighting::kStudio) return add_studio_set(scene, stage.subject, stage.camera.position, 3, 4);
+  const Eigen::AlignedBox3d& box = stage.subject;
+  const double half = 2.0 * box.diagonal().head<2>().maxCoeff() + 1e-3, z = box.min().z() - 1e-6;
+  const Eigen::Vector2d c = box.center().head<2>();
+  add_ground(scene, c.x() - half, c.y() - half, c.x() + half, c.y() + half, z, 1);
 }
 
 /// What every image of one command shares, made once.
@@ -141,7 +165,6 @@ struct RenderInputs {
   std::vector<std::filesystem::path> files, frames;
   RunVariants variants;
   std::vector<shading::Material> materials;
-  shading::Lights lights;
   shading::CdrfTable cdrf{513, 513};
 };
 
@@ -154,23 +177,26 @@ struct RenderTotals {
 /// The image of `scene` by the settings' integrator; its rays into `stats` (the path
 /// tracer's paths as camera rays, its other rays as shadow rays).
 shading::Image integrate(const RenderCommandSettings& s, const RenderInputs& in, const shading::RenderScene& scene,
-                         const shading::Camera& camera, shading::RenderStats& stats) {
+                         const Stage& stage, shading::RenderStats& stats) {
+  const shading::Camera& camera = stage.camera;
+  const shading::Lights& lights = stage.lights;
   Progress progress("render: tiles", shading::tile_count(s.render));
   const auto update = [&](int done, int) { progress.update(done); };
   shading::Image image;
   if (s.integrator != RenderIntegrator::kPath && s.bounces == 0) {
-    image = shading::render(scene, in.materials, in.lights, camera, in.cdrf, s.render, &stats, update, stop_requested);
+    image = shading::render(scene, in.materials, lights, camera, in.cdrf, s.render, &stats, update, stop_requested);
   } else {
     const shading::RenderSettings& r = s.render;
     const bool reference = s.integrator == RenderIntegrator::kPath;
     shading::PathTraceSettings settings{.width = r.width, .height = r.height, .samples_per_pixel = r.samples_per_pixel,
                                         .sampler = r.sampler, .seed = r.seed,
                                         .max_depth = reference ? s.max_depth : 1 + s.bounces};
+    settings.crop = r.crop;
     if (!reference) settings.cdrf = &in.cdrf;  // the grains' fast model, not their medium
     std::vector<std::optional<shading::Medium>> media;
     if (reference) media.push_back(grain_medium(s.absorption_percent));
     shading::PathTraceStats path;
-    image = shading::path_trace(scene, in.materials, media, in.lights, camera, settings, &path, update, stop_requested);
+    image = shading::path_trace(scene, in.materials, media, lights, camera, settings, &path, update, stop_requested);
     stats = {path.paths, path.rays - path.paths, path.seconds};
   }
   progress.finish();
@@ -178,28 +204,28 @@ shading::Image integrate(const RenderCommandSettings& s, const RenderInputs& in,
   return image;
 }
 
-/// Image k: its scene, the camera (framed on this image when none is set yet), the render,
-/// its PNG and EXR.
-void render_image(const RenderCommandSettings& s, const RenderInputs& in, int k, std::optional<shading::Camera>& camera,
+/// Image k: its scene, the stage (set on this image when none is yet), the render, its PNG
+/// and its EXR with the AOVs.
+void render_image(const RenderCommandSettings& s, const RenderInputs& in, int k, std::optional<Stage>& stage,
                   const std::filesystem::path& folder, RenderTotals& totals) {
   shading::RenderScene scene;
   std::vector<Eigen::AlignedBox3d> grain_boxes;
   if (!s.run.empty()) {
     totals.own_meshes = add_run_grains(scene, s.run, in.variants, in.frames[k], grain_boxes, s.soft);
   } else {
-    add_mesh_files(scene, in.files, s.side_by_side, grain_boxes);
+    add_mesh_files(scene, s, in.files, grain_boxes);
   }
-  const Eigen::AlignedBox3d box = add_bowl_and_ground(scene, s, framing_box(grain_boxes));
+  const Eigen::AlignedBox3d box = add_bowl(scene, s, framing_box(grain_boxes));
+  if (!stage) stage = stage_for(s, box);
+  add_set(scene, s, *stage);
   scene.commit();
-  if (!camera) {
-    const double aspect = static_cast<double>(s.render.width) / s.render.height;
-    camera = framing_camera(box, 35.0, -60.0, 30.0, aspect);
-  }
   shading::RenderStats stats;
-  const shading::Image image = integrate(s, in, scene, *camera, stats);
+  const shading::Image image = integrate(s, in, scene, *stage, stats);
+  const shading::Aovs aovs = shading::render_aovs(scene, in.materials, stage->camera, s.render.width, s.render.height,
+                                                  s.render.crop);
   const std::string name = s.every_frame ? in.frames[k].stem().string() : "render";
   write_png(folder / (name + ".png"), tone_map(image, s.exposure));
-  write_exr(folder / (name + ".exr"), image);
+  write_exr(folder / (name + ".exr"), exr_channels(image, &aovs, s.render.width, s.render.height, s.render.crop));
   totals.stats.camera_rays += stats.camera_rays;
   totals.stats.shadow_rays += stats.shadow_rays;
   totals.stats.seconds += stats.seconds;
@@ -220,8 +246,15 @@ std::string sampler_name(shading::SamplerKind kind) {
   return kind == shading::SamplerKind::kSobol ? "sobol" : kind == shading::SamplerKind::kStratified ? "stratified" : "independent";
 }
 
-void write_render_info(const RenderCommandSettings& s, const RenderInputs& in, int images, const RenderTotals& totals,
-                       double wall_seconds, const std::filesystem::path& folder) {
+std::string vector_cell(const Eigen::Vector3d& v) { return cell(v.x()) + " " + cell(v.y()) + " " + cell(v.z()); }
+
+std::string crop_cell(const shading::PixelWindow& crop) {
+  if (crop.empty()) return "none";
+  return cell(crop.x0) + " " + cell(crop.y0) + " " + cell(crop.x1) + " " + cell(crop.y1);
+}
+
+void write_render_info(const RenderCommandSettings& s, const RenderInputs& in, const shading::Camera& camera, int images,
+                       const RenderTotals& totals, double wall_seconds, const std::filesystem::path& folder) {
   const double rays = static_cast<double>(totals.stats.camera_rays + totals.stats.shadow_rays);
   const std::string meshes = s.run.empty()    ? cell(static_cast<long>(in.files.size()))
                              : s.every_frame ? "run " + s.run.string() + ", every frame"
@@ -239,11 +272,20 @@ void write_render_info(const RenderCommandSettings& s, const RenderInputs& in, i
                                   {"bounces", s.integrator == RenderIntegrator::kPath ? "n/a" : cell(s.bounces)},
                                   {"absorption_percent", cell(s.absorption_percent)},
                                   {"sigma0_m", cell(in.materials[0].sigma0)},
+                                  {"shading_radius_m", cell(s.shading_radius)},
                                   {"width", cell(s.render.width)},
                                   {"height", cell(s.render.height)},
+                                  {"crop", crop_cell(s.render.crop)},
+                                  {"camera_position_m", vector_cell(camera.position)},
+                                  {"camera_target_m", vector_cell(camera.target)},
+                                  {"camera_up", vector_cell(camera.up)},
+                                  {"camera_fov_degrees", cell(camera.vertical_fov_degrees)},
+                                  {"camera_aperture_m", cell(camera.aperture_radius)},
+                                  {"camera_focus_m", cell(camera.focus_distance)},
                                   {"samples_per_pixel", cell(s.render.samples_per_pixel)},
                                   {"sampler", sampler_name(s.render.sampler)},
                                   {"seed", cell(static_cast<long>(s.render.seed))},
+                                  {"lighting", s.lighting == Lighting::kStudio ? "studio" : "sun"},
                                   {"shadows", s.render.shadows ? "on" : "off"},
                                   {"ambient_occlusion", s.render.ambient_occlusion ? "on" : "off"},
                                   {"camera_rays", cell(static_cast<long>(totals.stats.camera_rays))},
@@ -281,6 +323,11 @@ void validate(const RenderCommandSettings& s) {
     throw std::invalid_argument("render: --absorption must be in [0, 100] %");
   if (s.render.width < 1 || s.render.height < 1 || s.render.width > 16384 || s.render.height > 16384)
     throw std::invalid_argument("render: --width and --height must be in [1, 16384]");
+  const shading::PixelWindow& crop = s.render.crop;
+  if (crop.x0 != 0 || crop.y0 != 0 || crop.x1 != 0 || crop.y1 != 0) {
+    if (crop.empty()) throw std::invalid_argument("render: --crop x0 y0 x1 y1 needs x0 < x1 and y0 < y1");
+    shading::rendered_pixels(s.render.width, s.render.height, crop, "render: --crop");
+  }
   if (s.render.samples_per_pixel < 1 || s.render.samples_per_pixel > 1 << 20)
     throw std::invalid_argument("render: --spp must be in [1, 1048576]");
   if (s.max_depth < 1 || s.max_depth > 100000) throw std::invalid_argument("render: --max-depth must be in [1, 100000]");
@@ -298,18 +345,17 @@ shading::Camera render_command(const RenderCommandSettings& settings, const std:
   inputs.files = mesh_files(settings.meshes);
   if (!settings.run.empty()) {
     inputs.frames = frames_to_render(settings);
-    inputs.variants = read_run_variants(settings.run);
+    inputs.variants = read_run_variants(settings.run, settings.shading_radius);
   }
   inputs.materials = materials_of(settings.absorption_percent, settings.integrator);
-  inputs.lights = lights_of(settings);
   make_output_folder(folder);
 
-  std::optional<shading::Camera> camera = settings.camera;
+  std::optional<Stage> stage;
   RenderTotals totals;
   const int images = settings.run.empty() ? 1 : static_cast<int>(inputs.frames.size());
   Progress progress("render: frames", images);
   for (int k = 0; k < images; ++k) {
-    render_image(settings, inputs, k, camera, folder, totals);
+    render_image(settings, inputs, k, stage, folder, totals);
     progress.update(k + 1);
   }
   progress.finish();
@@ -318,8 +364,8 @@ shading::Camera render_command(const RenderCommandSettings& settings, const std:
     encode_video(folder, "frame_%04d.png", std::stoi(first.substr(first.find('_') + 1)), run_fps(settings.run),
                  "render.mp4");
   }
-  write_render_info(settings, inputs, images, totals, seconds_since(start), folder);
-  return *camera;
+  write_render_info(settings, inputs, stage->camera, images, totals, seconds_since(start), folder);
+  return stage->camera;
 }
 
 void validate(const RunFrameImage& image) {

@@ -4,11 +4,14 @@
 // chawan, glazed) as cooked rice with the CDRF (paper §4.4), the translucent model (the CDRF
 // and the light through the grain), either with bounces of light between surfaces, or with
 // the reference path tracer (shading/path_tracer.hpp: light through and between the grains, their medium at the
-// water absorption W), on an optional ground, under a sun and a uniform or image sky, from a
-// camera given on the command line or framed automatically.
-// Writes render.png (tone mapped), render.exr (linear) — frame_NNNN.png and .exr for every
-// frame of a run, and render.mp4 of them with `video` — and run_info.txt (settings, ray
-// counts, rays per second, wall time).
+// water absorption W), lit by a food photographer's studio (studio_lighting.hpp) or by a sun
+// and a uniform or image sky over a ground, from a camera given on the command line or framed
+// automatically.
+// Writes render.png (tone mapped), render.exr (linear, with the AOV layers of
+// shading/aovs.hpp) — frame_NNNN.png and .exr for every frame of a run, and render.mp4 of
+// them with `video` — and run_info.txt (settings, the camera, ray counts, rays per second,
+// wall time). With a crop window, the images are that part of the frame; its EXR's data
+// window places it in the frame for merge_crops (crop_merge.hpp).
 #pragma once
 
 #include <filesystem>
@@ -17,6 +20,7 @@
 #include <vector>
 
 #include "experiments/render/run_frames.hpp"
+#include "experiments/render/studio_lighting.hpp"
 #include "shading/camera.hpp"
 #include "shading/lights.hpp"
 #include "shading/material.hpp"
@@ -30,6 +34,11 @@ enum class RenderIntegrator {
   kPath,         ///< the reference path tracer (shading/path_tracer.hpp)
 };
 
+enum class Lighting {
+  kStudio,  ///< a food photographer's key, fill, table and backdrop (studio_lighting.hpp)
+  kSun,     ///< the sun, area lights and a sky over a grey ground
+};
+
 struct RenderCommandSettings {
   std::vector<std::filesystem::path> meshes;  ///< files, or folders whose .ply/.obj files are read
   std::filesystem::path run;                  ///< or: the output folder of a scene run
@@ -40,13 +49,15 @@ struct RenderCommandSettings {
   int max_depth = 64;  ///< the path tracer's surface events per path
   int bounces = 0;     ///< cdrf, translucent: bounces of light between surfaces (0: direct light)
   std::optional<shading::Camera> camera;  ///< none: framed on the meshes' bounds
+  Lighting lighting = Lighting::kStudio;
+  StudioLighting studio;
   double sun_elevation_degrees = 50.0, sun_azimuth_degrees = -30.0;
   double sun_irradiance = 3.0;  ///< [W/m²-like units]; 0: no sun
   double sun_diameter_degrees = 0.53;
   std::vector<shading::QuadLight> area_lights;
   double sky_radiance = 0.3;    ///< uniform sky; ignored with sky_image
   std::filesystem::path sky_image;  ///< latitude–longitude OpenEXR, z up
-  bool ground = true;           ///< a grey plane under the meshes
+  bool ground = true;           ///< the studio's table and backdrop, or the sun's grey ground
   bool side_by_side = false;    ///< each mesh centred in its own cell of a grid (`rice grains` output)
   double exposure = 0.0;        ///< stops, PNG only
   /// A run's every frame, into frame_NNNN.png and .exr, with one camera: the given one or the
@@ -54,6 +65,7 @@ struct RenderCommandSettings {
   bool every_frame = false;
   bool video = false;  ///< with every_frame: the frames also as render.mp4 at the run's frame rate (io/video.hpp)
   SoftGrainDrawing soft;  ///< how a soft run's grains are drawn
+  double shading_radius = kShadingRadius;  ///< [m] grains' normals and curvature smoothed over it (scene_pieces.hpp)
 };
 
 /// Throws std::invalid_argument naming the setting that is out of range or the file missing.

@@ -13,7 +13,7 @@
 #include "grains/embedding.hpp"
 #include "grains/mesh_io.hpp"
 #include "shading/curvature.hpp"
-#include "shading/thickness.hpp"
+#include "shading/smooth_normals.hpp"
 
 namespace rice::experiments {
 
@@ -39,8 +39,9 @@ std::vector<std::filesystem::path> run_frames(const std::filesystem::path& run) 
   return frames;
 }
 
-RunVariants read_run_variants(const std::filesystem::path& run) {
+RunVariants read_run_variants(const std::filesystem::path& run, double shading_radius) {
   RunVariants variants;
+  variants.shading_radius = shading_radius;
   for (int k = 0;; ++k) {
     auto path = run / "variants" / ("variant_" + std::to_string(k) + ".ply");
     if (!std::filesystem::exists(path)) break;
@@ -53,8 +54,7 @@ RunVariants read_run_variants(const std::filesystem::path& run) {
                              std::to_string(variants.meshes.size()) + " variants");
   Progress progress("render: variants, curvature and embeddings", static_cast<int>(variants.meshes.size()));
   for (size_t k = 0; k < variants.meshes.size(); ++k) {
-    variants.curvature.push_back(shading::vertex_mean_curvature(variants.meshes[k].V, variants.meshes[k].F));
-    variants.thickness.push_back(shading::vertex_thickness(variants.meshes[k].V, variants.meshes[k].F));
+    variants.shading.push_back(grain_shading(variants.meshes[k].V, variants.meshes[k].F, shading_radius));
     if (!variants.simulation.empty())
       variants.embedding.push_back(grains::embed_points(variants.meshes[k].V, variants.simulation[k]));
     progress.update(static_cast<int>(k + 1));
@@ -96,9 +96,8 @@ class VariantPrototypes {
       : scene_(scene), variants_(variants), index_(variants.meshes.size(), -1) {}
   int operator[](int variant) {
     if (index_[variant] < 0) {
-      index_[variant] = scene_.add_prototype(variants_.meshes[variant].V, variants_.meshes[variant].F,
-                                             variants_.curvature[variant]);
-      scene_.set_thickness(index_[variant], variants_.thickness[variant]);
+      index_[variant] = add_grain_prototype(scene_, variants_.meshes[variant].V, variants_.meshes[variant].F,
+                                            variants_.shading[variant]);
     }
     return index_[variant];
   }
@@ -129,7 +128,7 @@ void add_rigid_grains(shading::RenderScene& scene, const NumericCsv& grains_csv,
     const Eigen::Vector3d c(value(frame, b, "x"), value(frame, b, "y"), value(frame, b, "z"));
     const Eigen::Affine3d place = Eigen::Translation3d(c) * q.normalized() * Eigen::Translation3d(drop - c0) *
                                   R.normalized() * Eigen::Scaling(value(grains_csv, a, "swell"));
-    scene.add_instance(prototype[variant], place, 0);
+    scene.add_instance(prototype[variant], place, 0, static_cast<int>(g));
     boxes.push_back(placed_box(variants.meshes[variant].V, place));
   }
 }
@@ -164,19 +163,26 @@ int add_soft_grains(shading::RenderScene& scene, const NumericCsv& grains_csv, c
     if (soft.instance_tolerance > 0.0) {
       const RigidFit fit = fit_rigid_motion(variants.simulation[grain.variant].V, grain.swell, grain.x);
       if (fit.residual <= soft.instance_tolerance) {
-        scene.add_instance(prototype[grain.variant], fit.place, 0);
+        scene.add_instance(prototype[grain.variant], fit.place, 0, grain.grain);
         boxes.push_back(placed_box(variants.meshes[grain.variant].V, fit.place));
         continue;
       }
     }
     const grains::SurfaceMesh mesh = deformed_render_mesh(grain, variants);
-    const Eigen::VectorXd H = soft.curvature == SoftCurvature::kRest
-                                  ? Eigen::VectorXd(variants.curvature[grain.variant] / grain.swell)
-                                  : shading::vertex_mean_curvature(mesh.V, mesh.F);
-    const int own_prototype = scene.add_prototype(mesh.V, mesh.F, H, shading::RenderScene::Reuse::kSingle);
-    // The rest thickness, scaled by the swell: a grain at rest deforms by a few per cent.
-    scene.set_thickness(own_prototype, variants.thickness[grain.variant] * grain.swell);
-    scene.add_instance(own_prototype, Eigen::Affine3d::Identity(), 0);
+    const GrainShading& rest = variants.shading[grain.variant];
+    // The rest normals carried by the tets' deformation (smoothing the deformed mesh anew cost
+    // 90 ms a grain); the rest curvature and thickness scaled by the swell (a grain at rest
+    // deforms by a few per cent), or its own curvature.
+    const grains::VolumeMesh& simulation = variants.simulation[grain.variant];
+    GrainShading drawn{.curvature = rest.curvature / grain.swell,
+                       .thickness = rest.thickness * grain.swell,
+                       .normals = grains::carry_normals(variants.embedding[grain.variant], rest.normals,
+                                                        simulation.V, grain.x, simulation.T)};
+    if (soft.curvature == SoftCurvature::kDeformed)
+      drawn.curvature = shading::smoothed_vertex_values(mesh.V, mesh.F, shading::vertex_mean_curvature(mesh.V, mesh.F),
+                                                        variants.shading_radius);
+    scene.add_instance(add_grain_prototype(scene, mesh.V, mesh.F, drawn, shading::RenderScene::Reuse::kSingle),
+                       Eigen::Affine3d::Identity(), 0, grain.grain);
     boxes.push_back(placed_box(mesh.V, Eigen::Affine3d::Identity()));
     ++own;
   }

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "experiments/render/scene_pieces.hpp"
 #include "grains/embedding.hpp"
 #include "experiments/io/numeric_csv.hpp"
 #include "grains/mesh_types.hpp"
@@ -45,17 +46,20 @@ struct SoftGrainDrawing {
   double instance_tolerance = 2e-5;
 };
 
-/// The run's variants and their vertex curvature, computed once for every frame rendered; for
-/// a soft run also their simulation meshes and the render meshes' embeddings in them.
+/// The run's variants and their shading (curvature, normals, thickness), computed once for
+/// every frame rendered; for a soft run also their simulation meshes and the render meshes'
+/// embeddings in them.
 struct RunVariants {
   std::vector<grains::SurfaceMesh> meshes;
-  std::vector<Eigen::VectorXd> curvature;
-  std::vector<Eigen::VectorXd> thickness;      ///< for the translucent model (shading/thickness.hpp)
+  std::vector<GrainShading> shading;
+  double shading_radius = kShadingRadius;      ///< [m] what `shading` was smoothed over
   std::vector<grains::VolumeMesh> simulation;  ///< empty for a rigid run
   std::vector<grains::Embedding> embedding;
 };
 
-RunVariants read_run_variants(const std::filesystem::path& run);
+/// The variants of a run's folder, shaded at `shading_radius` [m] (0: the meshes' own normals
+/// and curvature).
+RunVariants read_run_variants(const std::filesystem::path& run, double shading_radius = kShadingRadius);
 
 /// A soft grain at a frame.
 struct SoftGrain {
@@ -73,7 +77,8 @@ std::vector<SoftGrain> soft_run_grains(const NumericCsv& grains_csv, const Numer
 /// Its render mesh, carried by its simulation vertices through its variant's embedding.
 grains::SurfaceMesh deformed_render_mesh(const SoftGrain& grain, const RunVariants& variants);
 
-/// Adds the grains in the scene at `frame` (those still parked are left out), with material 0,
+/// Adds the grains in the scene at `frame` (those still parked are left out), with material 0
+/// and their index in grains.csv as label,
 /// and appends each one's box to `boxes`: a rigid run's as instances of the variants, a soft
 /// run's as `soft` says. Returns how many soft grains were drawn as their own mesh. Throws
 /// std::runtime_error naming the file for a frame that does not match grains.csv or the

@@ -7,6 +7,7 @@
 
 #include "grains/water_content.hpp"
 #include "shading/curvature.hpp"
+#include "shading/smooth_normals.hpp"
 #include "shading/thickness.hpp"
 
 namespace rice::experiments {
@@ -29,10 +30,23 @@ shading::Medium grain_medium(double absorption_percent) {
   return {optics.reduced_scattering, optics.absorption, 0.0, optics.refractive_index};
 }
 
-int add_grain_prototype(shading::RenderScene& scene, const shading::MeshVertices& V, const shading::MeshTriangles& F) {
-  const int prototype = scene.add_prototype(V, F, shading::vertex_mean_curvature(V, F));
-  scene.set_thickness(prototype, shading::vertex_thickness(V, F));
+GrainShading grain_shading(const shading::MeshVertices& V, const shading::MeshTriangles& F, double shading_radius) {
+  return {.curvature = shading::smoothed_vertex_values(V, F, shading::vertex_mean_curvature(V, F), shading_radius),
+          .thickness = shading::vertex_thickness(V, F),
+          .normals = shading::smoothed_vertex_normals(V, F, shading_radius)};
+}
+
+int add_grain_prototype(shading::RenderScene& scene, const shading::MeshVertices& V, const shading::MeshTriangles& F,
+                        const GrainShading& shading, shading::RenderScene::Reuse reuse) {
+  const int prototype = scene.add_prototype(V, F, shading.curvature, reuse);
+  scene.set_thickness(prototype, shading.thickness);
+  scene.set_shading_normals(prototype, shading.normals);
   return prototype;
+}
+
+int add_grain_prototype(shading::RenderScene& scene, const shading::MeshVertices& V, const shading::MeshTriangles& F,
+                        double shading_radius) {
+  return add_grain_prototype(scene, V, F, grain_shading(V, F, shading_radius));
 }
 
 void add_ground(shading::RenderScene& scene, double x0, double y0, double x1, double y1, double z, int material) {

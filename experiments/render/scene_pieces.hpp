@@ -1,11 +1,11 @@
 // The pieces every rice render is made of (`rice render`, figure 13, the render and CDRF
 // studies): the rice material and the grain's medium at a water content, a grain prototype with
-// its vertex curvature, a ground, a sun's direction, and a camera that frames a box.
+// its shading (curvature, normals at the light's scale, thickness), a ground and a sun's
+// direction.
 #pragma once
 
 #include <Eigen/Geometry>
 
-#include "shading/camera.hpp"
 #include "shading/material.hpp"
 #include "shading/random_walk.hpp"
 #include "shading/render_scene.hpp"
@@ -20,9 +20,29 @@ shading::Material rice_material(double absorption_percent);
 /// water-content model, isotropic scattering with μs = μs' (the similarity relation).
 shading::Medium grain_medium(double absorption_percent);
 
-/// Adds `V, F` as a prototype with its jet-fitted vertex curvature and its thickness (for the
-/// translucent model); returns its index.
-int add_grain_prototype(shading::RenderScene& scene, const shading::MeshVertices& V, const shading::MeshTriangles& F);
+/// [m] The scale light averages a grain's surface over, for shading normals and curvature
+/// (shading/smooth_normals.hpp): about two mean free paths 1/μs′ at W 20% (0.19 mm), twice the
+/// largest surface bump's radius. The bumps' specks go and the silhouette stays; `rice study
+/// cdrf --shading-radius-mm` and docs/rendering.md measure it.
+inline constexpr double kShadingRadius = 0.4e-3;
+
+/// What a grain mesh is shaded with, per vertex: the jet-fitted mean curvature and the normals
+/// smoothed over `shading_radius` (0: the mesh's own), and the thickness for the translucent
+/// model.
+struct GrainShading {
+  Eigen::VectorXd curvature, thickness;
+  shading::MeshVertices normals;
+};
+GrainShading grain_shading(const shading::MeshVertices& V, const shading::MeshTriangles& F,
+                           double shading_radius = kShadingRadius);
+
+/// Adds `V, F` as a prototype shaded with `shading`; returns its index.
+int add_grain_prototype(shading::RenderScene& scene, const shading::MeshVertices& V, const shading::MeshTriangles& F,
+                        const GrainShading& shading,
+                        shading::RenderScene::Reuse reuse = shading::RenderScene::Reuse::kShared);
+/// The same with grain_shading(V, F, shading_radius).
+int add_grain_prototype(shading::RenderScene& scene, const shading::MeshVertices& V, const shading::MeshTriangles& F,
+                        double shading_radius = kShadingRadius);
 
 /// Adds the rectangle [x0, x1] × [y0, y1] at height z, facing +z (a ground, a plate, a
 /// cloth), as its own prototype and instance with `material`.

@@ -124,6 +124,10 @@ struct MeshCollider {
 struct SceneRender {
   int width = 640, height = 480;
   int samples_per_pixel = 16;
+  std::string integrator = "cdrf";  ///< cdrf, translucent or path
+  int bounces = 0;
+  bool studio = true;  ///< lighting = "studio"; false: "sun"
+  double key_irradiance = 3.0, fill_ratio = 0.25;
   double sun_elevation_degrees = 50.0, sun_azimuth_degrees = -30.0;
   double sun_irradiance = 3.0;  ///< 0: no sun
   double sky_radiance = 0.3;

@@ -268,6 +268,11 @@ SceneRender read_render(TomlSection section) {
   r.width = static_cast<int>(section.integer("width"));
   r.height = static_cast<int>(section.integer("height"));
   r.samples_per_pixel = static_cast<int>(section.integer("samples_per_pixel"));
+  r.integrator = section.choice("integrator");
+  r.bounces = static_cast<int>(section.integer("bounces"));
+  r.studio = section.choice("lighting") == "studio";
+  r.key_irradiance = section.number("key_irradiance");
+  r.fill_ratio = section.number("fill_ratio");
   r.sun_elevation_degrees = section.number("sun_elevation_deg");
   r.sun_azimuth_degrees = section.number("sun_azimuth_deg");
   r.sun_irradiance = section.number("sun_irradiance");

@@ -134,6 +134,13 @@ RenderCommandSettings scene_render_settings(const SceneRender& r, const Scene& s
   s.render.width = r.width;
   s.render.height = r.height;
   s.render.samples_per_pixel = r.samples_per_pixel;
+  s.integrator = r.integrator == "path"          ? RenderIntegrator::kPath
+                 : r.integrator == "translucent" ? RenderIntegrator::kTranslucent
+                                                 : RenderIntegrator::kCdrf;
+  s.bounces = r.bounces;
+  s.lighting = r.studio ? Lighting::kStudio : Lighting::kSun;
+  s.studio.key_irradiance = r.key_irradiance;
+  s.studio.fill_ratio = r.fill_ratio;
   s.sun_elevation_degrees = r.sun_elevation_degrees;
   s.sun_azimuth_degrees = r.sun_azimuth_degrees;
   s.sun_irradiance = r.sun_irradiance;

@@ -37,7 +37,7 @@ CsvTable compare_curvature(const SoftCurvatureStudySettings& s, const RunVariant
     const grains::SurfaceMesh mesh = deformed_render_mesh(grain, variants);
     const Eigen::VectorXd deformed = shading::vertex_mean_curvature(mesh.V, mesh.F);
     const double seconds = seconds_since(start);
-    const Eigen::VectorXd rest = variants.curvature[grain.variant] / grain.swell;
+    const Eigen::VectorXd rest = variants.shading[grain.variant].curvature / grain.swell;
     const double relative = rms(deformed - rest) / rms(deformed);
     table.add_row({cell(grain.grain), cell(grain.variant), cell(static_cast<long>(mesh.V.rows())), cell(relative),
                    cell(seconds)});
@@ -60,7 +60,7 @@ void validate(const SoftCurvatureStudySettings& s) {
 void soft_curvature_study_command(const SoftCurvatureStudySettings& s, const std::filesystem::path& folder) {
   validate(s);
   make_output_folder(folder);
-  const RunVariants variants = read_run_variants(s.image.run);
+  const RunVariants variants = read_run_variants(s.image.run, 0.0);  // the meshes' own curvature
   CurvatureTotals totals;
   const CsvTable table = compare_curvature(s, variants, totals);
   write_file_atomically(folder / "soft_curvature.csv", table.text());

@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+#include "experiments/render/scene_pieces.hpp"
+
 namespace rice::experiments {
 
 struct TranslucencyStudySettings {
@@ -34,7 +36,8 @@ struct TranslucencyStudySettings {
   double d_max_mm = 6.0;
   int d_nodes = 13, c_nodes = 9;
   double smoothing = 1e-4;
-  double normal_radius_mm = 0.0;  ///< shading normals smoothed over this ball (smooth_normals.hpp)
+  /// shading normals and curvature smoothed over this ball (smooth_normals.hpp), as renders do
+  double shading_radius_mm = 1e3 * kShadingRadius;
   int curvature_rings = 2;        ///< the jet fit's neighbourhood for κ (curvature.hpp)
   std::uint64_t seed = 1;
 };

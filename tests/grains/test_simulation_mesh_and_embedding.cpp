@@ -156,6 +156,31 @@ TEST_F(GrainTest, EmbeddingMovesRigidlyUnderRigidMotion) {
   EXPECT_LT((render - expected).cwiseAbs().maxCoeff(), 1e-12);
 }
 
+/// Unit sums of the faces' cross products at each vertex.
+Vertices area_weighted_normals(const Vertices& V, const Triangles& F) {
+  Vertices N = Vertices::Zero(V.rows(), 3);
+  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    const Vec3 a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+    for (int k = 0; k < 3; ++k) N.row(F(f, k)) += (b - a).cross(c - a).transpose();
+  }
+  N.rowwise().normalize();
+  return N;
+}
+
+TEST_F(GrainTest, NormalsCarriedByAnAffineMapAreTheMappedMeshsNormals) {
+  // x = A X + b, a shear and a stretch: every tet's F is A, and the area-weighted normals of
+  // the mapped render mesh are A's cofactor times the rest ones.
+  Eigen::Matrix3d A;
+  A << 1.1, 0.3, 0.0, -0.1, 0.9, 0.2, 0.05, 0.0, 1.2;
+  const Vertices moved = (grain_->simulation.V * A.transpose()).rowwise() + Vec3(0.01, 0.0, -0.02).transpose();
+  const Vertices rest_normals = area_weighted_normals(grain_->render.V, grain_->render.F);
+  const Vertices carried =
+      carry_normals(grain_->embedding, rest_normals, grain_->simulation.V, moved, grain_->simulation.T);
+  const Vertices mapped = (grain_->render.V * A.transpose()).rowwise() + Vec3(0.01, 0.0, -0.02).transpose();
+  const Vertices expected = area_weighted_normals(mapped, grain_->render.F);
+  EXPECT_LT((carried - expected).cwiseAbs().maxCoeff(), 1e-9);
+}
+
 TEST_F(GrainTest, SwellFactorScalesBothMeshesAndTheMassIsKept) {
   const Cultivar japonica = cultivar_by_name("japonica");
   EXPECT_GE(grain_->shape.swell, japonica.swell_min);

@@ -1,6 +1,7 @@
 # `rice render` (meshes, a run's every frame and its video, the path tracer), `rice figure 13`,
 # `rice study cdrf`, `translucency`, `render` and `path-depth` end to end at toy sizes: each writes its files;
-# the same seed renders the same EXR twice; a missing mesh exits non-zero and leaves no folder.
+# the same seed renders the same EXR twice; two crops merged are the whole frame, byte for byte; a
+# missing mesh exits non-zero and leaves no folder.
 # Called by CTest with -DRICE=<rice binary> -DOUT=<scratch folder> -DSCENES=<experiments/scenes>.
 file(REMOVE_RECURSE "${OUT}")
 function(run)
@@ -27,6 +28,21 @@ execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${OUT}/render_a/rende
 if(different)
   message(FATAL_ERROR "same seed, different renders")
 endif()
+# A frame in two crops (one of the path tracer's, one of the direct renderer's), merged.
+foreach(integrator cdrf path)
+  set(args --meshes "${OUT}/grains" --side-by-side --width 40 --height 20 --spp 2 --integrator ${integrator} --max-depth 4)
+  run(render ${args} --out "${OUT}/whole_${integrator}")
+  run(render ${args} --crop 0 0 17 20 --out "${OUT}/left_${integrator}")
+  run(render ${args} --crop 17 0 40 20 --out "${OUT}/right_${integrator}")
+  run(merge-crops "${OUT}/left_${integrator}" "${OUT}/right_${integrator}" --out "${OUT}/merged_${integrator}")
+  foreach(file render.exr render.png)
+    execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${OUT}/whole_${integrator}/${file}"
+                            "${OUT}/merged_${integrator}/${file}" RESULT_VARIABLE different)
+    if(different)
+      message(FATAL_ERROR "${integrator}: two crops merged differ from the whole frame's ${file}")
+    endif()
+  endforeach()
+endforeach()
 run(render --meshes "${OUT}/grains" --side-by-side --integrator path --max-depth 8 --width 24 --height 12 --spp 2
     --out "${OUT}/render_path")
 expect_files("${OUT}/render_path" render.png render.exr run_info.txt)

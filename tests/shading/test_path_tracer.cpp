@@ -209,6 +209,26 @@ TEST(PathTracer, SameSeedSameImageOnAnyThreadCount) {
   EXPECT_EQ(rms_difference(one, many), 0.0);
 }
 
+TEST(PathTracer, ACropIsThoseVeryPixelsOfTheWholeFrame) {
+  ThreeSpheres spheres;
+  const std::vector<Material> materials = {{.kind = MaterialKind::kRice}};
+  const std::vector<std::optional<Medium>> media = {Medium{4000.0, 30.0, 0.2, 1.33}};
+  Lights lights = sky_of(1.0f);
+  lights.suns.push_back({});
+  PathTraceSettings settings{.width = 20, .height = 12, .samples_per_pixel = 4, .seed = 3};
+  const Camera camera = test_support::looking_down(0.02, 25.0);
+  const Image whole = path_trace(spheres.scene, materials, media, lights, camera, settings);
+  settings.crop = {3, 2, 20, 9};
+  const Image crop = path_trace(spheres.scene, materials, media, lights, camera, settings);
+  ASSERT_EQ(crop.width, 17);
+  ASSERT_EQ(crop.height, 7);
+  double difference = 0.0;
+  for (int y = 0; y < crop.height; ++y)
+    for (int x = 0; x < crop.width; ++x) difference += (crop.at(x, y) - whole.at(x + 3, y + 2)).abs().sum();
+  EXPECT_EQ(difference, 0.0);
+  EXPECT_GT(mean_radiance(crop), 0.0);
+}
+
 TEST(PathTracer, RefusesBadSettingsAndMedia) {
   ThreeSpheres spheres;
   const std::vector<Material> materials = {{.kind = MaterialKind::kRice}};

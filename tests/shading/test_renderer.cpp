@@ -146,6 +146,38 @@ TEST(Renderer, SameSeedSameImageOnAnyThreadCount) {
   EXPECT_EQ(rms_difference(one, many), 0.0);
 }
 
+/// The pixels [x0, x0 + crop.width) × [y0, …) of `whole`.
+Image pixels_of(const Image& whole, const PixelWindow& crop) {
+  Image part(crop.width(), crop.height());
+  for (int y = crop.y0; y < crop.y1; ++y)
+    for (int x = crop.x0; x < crop.x1; ++x) part.at(x - crop.x0, y - crop.y0) = whole.at(x, y);
+  return part;
+}
+
+// A crop window renders the very pixels the whole frame has there (a frame split across
+// processes joins into the frame), and one outside the frame is refused.
+TEST(Renderer, ACropIsThoseVeryPixelsOfTheWholeFrame) {
+  RenderScene scene;
+  const auto sphere = test_support::icosphere(3);
+  place(scene, sphere);
+  scene.commit();
+  Lights lights;
+  lights.environment.constant = Color::Constant(1.0f);
+  lights.suns.push_back({});
+  const std::vector<Material> materials = {{.kind = MaterialKind::kRice, .sigma0 = 0.3}};
+  RenderSettings settings{.width = 40, .height = 30, .samples_per_pixel = 4, .seed = 3};
+  const Camera camera = test_support::looking_down(4.0, 30.0);
+  const Image whole = render(scene, materials, lights, camera, table(), settings);
+  settings.crop = {5, 7, 29, 30};
+  const Image crop = render(scene, materials, lights, camera, table(), settings);
+  ASSERT_EQ(crop.width, 24);
+  ASSERT_EQ(crop.height, 23);
+  EXPECT_EQ(rms_difference(crop, pixels_of(whole, settings.crop)), 0.0);
+  EXPECT_GT(mean_radiance(crop), 0.0);
+  settings.crop = {30, 0, 41, 30};
+  EXPECT_THROW(render(scene, materials, lights, camera, table(), settings), std::invalid_argument);
+}
+
 TEST(Renderer, InstancesMoveAndScaleTheirPrototype) {
   RenderScene scene;
   const auto sphere = test_support::icosphere(3);

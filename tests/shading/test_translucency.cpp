@@ -111,6 +111,35 @@ TEST(SmoothedNormals, FollowTheSurfaceUnderItsBumps) {
   EXPECT_THROW(smoothed_vertex_normals(sphere.V, sphere.F, -1.0), std::invalid_argument);
 }
 
+// The curvature of a bumpy sphere, averaged over the same ball, lies closer to the sphere's
+// 1/r than the mesh's own; a constant stays constant; a shading normal set on a prototype is
+// the one a hit reads.
+TEST(SmoothedCurvature, FollowsTheSurfaceUnderItsBumpsAndTheSceneShadesWithIt) {
+  test_support::TestMesh bumpy = test_support::icosphere(4);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> jitter(-0.02, 0.02);
+  for (Eigen::Index v = 0; v < bumpy.V.rows(); ++v) bumpy.V.row(v) *= 1.0 + jitter(rng);
+  const Eigen::VectorXd H = vertex_mean_curvature(bumpy.V, bumpy.F);
+  const Eigen::VectorXd smoothed = smoothed_vertex_values(bumpy.V, bumpy.F, H, 0.3);
+  const double raw_error = (H.array() - 1.0).matrix().norm(), smoothed_error = (smoothed.array() - 1.0).matrix().norm();
+  EXPECT_LT(smoothed_error, 0.3 * raw_error) << raw_error << " " << smoothed_error;
+  const Eigen::VectorXd ones = Eigen::VectorXd::Ones(bumpy.V.rows());
+  EXPECT_LT((smoothed_vertex_values(bumpy.V, bumpy.F, ones, 0.3) - ones).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_THROW(smoothed_vertex_values(bumpy.V, bumpy.F, Eigen::VectorXd::Ones(3), 0.3), std::invalid_argument);
+
+  RenderScene scene;
+  const int prototype = scene.add_prototype(bumpy.V, bumpy.F);
+  const MeshVertices up = MeshVertices::Zero(bumpy.V.rows(), 3).rowwise() + Eigen::RowVector3d(0, 0, 1);
+  scene.set_shading_normals(prototype, up);
+  EXPECT_THROW(scene.set_shading_normals(prototype, up.topRows(3)), std::invalid_argument);
+  scene.add_instance(prototype, Eigen::Affine3d::Identity(), 0);
+  scene.commit();
+  const auto hit = scene.intersect({{2, 0.1f, 0.2f}, {-1, 0, 0}});
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_GT(hit->shading_normal.z(), 0.9999f);
+  EXPECT_LT(hit->geometric_normal.z(), 0.5f);
+}
+
 TEST(TranslucentRice, AddsTauOverPiInTheAlbedosColourAndIsTheCdrfWithoutIt) {
   const CdrfTable cdrf(65, 33);
   Material m{.kind = MaterialKind::kRice, .albedo = Color(0.8f, 0.7f, 0.6f), .sigma0 = 1e-4};

@@ -64,6 +64,7 @@ std::vector<std::string> joined(std::vector<std::string> a, const std::vector<st
 // What a command needs besides the option swept, so that only that option can be refused.
 std::vector<std::string> required_arguments(const std::vector<std::string>& path) {
   if (path == std::vector<std::string>{"render"}) return {"--meshes", RICE_TEST_MESH};
+  if (path == std::vector<std::string>{"merge-crops"}) return {RICE_TEST_SCRATCH};
   if (path == std::vector<std::string>{"study", "soft-curvature"} || path == std::vector<std::string>{"study", "soft-instances"})
     return {"--run", RICE_TEST_SCRATCH};
   return {};
