@@ -34,9 +34,10 @@ struct PixelWindow {
 inline PixelWindow rendered_pixels(int width, int height, const PixelWindow& crop, const std::string& who) {
   if (crop.empty()) return {0, 0, width, height};
   if (crop.x0 < 0 || crop.y0 < 0 || crop.x1 > width || crop.y1 > height)
-    throw std::invalid_argument(who + ": the crop window [" + std::to_string(crop.x0) + ", " + std::to_string(crop.x1) +
-                                ") x [" + std::to_string(crop.y0) + ", " + std::to_string(crop.y1) + ") is not inside " +
-                                std::to_string(width) + " x " + std::to_string(height));
+    throw std::invalid_argument(who + ": the crop window [" + std::to_string(crop.x0) + ", " +
+                                std::to_string(crop.x1) + ") x [" + std::to_string(crop.y0) + ", " +
+                                std::to_string(crop.y1) + ") is not inside " + std::to_string(width) + " x " +
+                                std::to_string(height));
   return crop;
 }
 

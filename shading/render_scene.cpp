@@ -99,25 +99,25 @@ int RenderScene::add_prototype(const MeshVertices& V, const MeshTriangles& F, co
   return static_cast<int>(prototypes_.size()) - 1;
 }
 
-void RenderScene::set_thickness(int prototype, const Eigen::VectorXd& thickness) {
-  if (committed_) throw std::logic_error("RenderScene: set_thickness after commit");
+RenderScene::Prototype& RenderScene::prototype_for_vertex_data(int prototype, Eigen::Index count,
+                                                               const std::string& what) {
+  if (committed_) throw std::logic_error("RenderScene: " + what + " after commit");
   if (prototype < 0 || prototype >= prototype_count())
     throw std::invalid_argument("RenderScene: no prototype " + std::to_string(prototype));
   Prototype& p = *prototypes_[prototype];
-  if (thickness.size() != static_cast<Eigen::Index>(p.positions.size()))
-    throw std::invalid_argument("RenderScene: " + std::to_string(thickness.size()) + " thicknesses for " +
+  if (count != static_cast<Eigen::Index>(p.positions.size()))
+    throw std::invalid_argument("RenderScene: " + what + ": " + std::to_string(count) + " values for " +
                                 std::to_string(p.positions.size()) + " vertices");
+  return p;
+}
+
+void RenderScene::set_thickness(int prototype, const Eigen::VectorXd& thickness) {
+  Prototype& p = prototype_for_vertex_data(prototype, thickness.size(), "set_thickness");
   p.thickness.assign(thickness.data(), thickness.data() + thickness.size());
 }
 
 void RenderScene::set_shading_normals(int prototype, const MeshVertices& N) {
-  if (committed_) throw std::logic_error("RenderScene: set_shading_normals after commit");
-  if (prototype < 0 || prototype >= prototype_count())
-    throw std::invalid_argument("RenderScene: no prototype " + std::to_string(prototype));
-  Prototype& p = *prototypes_[prototype];
-  if (N.rows() != static_cast<Eigen::Index>(p.normals.size()))
-    throw std::invalid_argument("RenderScene: " + std::to_string(N.rows()) + " normals for " +
-                                std::to_string(p.normals.size()) + " vertices");
+  Prototype& p = prototype_for_vertex_data(prototype, N.rows(), "set_shading_normals");
   for (Eigen::Index v = 0; v < N.rows(); ++v) p.normals[v] = N.row(v).transpose().cast<float>().normalized();
 }
 

@@ -12,6 +12,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -129,6 +130,9 @@ class RenderScene {
     std::vector<float> vertex_values;  // empty: none
   };
   struct Embree;
+  /// The prototype for per-vertex data of `count` values; throws naming `what` after commit,
+  /// for an unknown prototype or a wrong count.
+  Prototype& prototype_for_vertex_data(int prototype, Eigen::Index count, const std::string& what);
   std::optional<ShadingPoint> shading_point(const Ray& ray, float t, unsigned instance, unsigned primitive, float u,
                                             float v) const;
 

@@ -41,7 +41,9 @@ struct RenderStats {
 };
 
 /// The image's tiles (image_tiles.hpp), the unit of work and of progress.
-inline int tile_count(const RenderSettings& s) { return tile_count(rendered_pixels(s.width, s.height, s.crop, "render")); }
+inline int tile_count(const RenderSettings& s) {
+  return tile_count(rendered_pixels(s.width, s.height, s.crop, "render"));
+}
 
 /// `progress(done, total)` is called after each tile, from the thread that rendered it; once
 /// `cancelled()` returns true no further tile starts (the image is then incomplete).

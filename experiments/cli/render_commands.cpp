@@ -82,7 +82,8 @@ class RenderCommands : public CommandFamily {
     c->add_option("--lighting", lighting_,
                   "studio (a soft key and fill, a table and a backdrop) or sun (the sun, the sky and a grey ground)")
         ->check(CLI::IsMember({"studio", "sun"}))->capture_default_str();
-    c->add_option("--key-irradiance", render_.studio.key_irradiance, "studio: the key light's irradiance at the subject")
+    c->add_option("--key-irradiance", render_.studio.key_irradiance,
+                  "studio: the key light's irradiance at the subject")
         ->check(number_in(0, 1e6))->capture_default_str();
     c->add_option("--fill-ratio", render_.studio.fill_ratio, "studio: fill irradiance / key irradiance")
         ->check(number_in(0, 10))->capture_default_str();
@@ -106,8 +107,11 @@ class RenderCommands : public CommandFamily {
     CLI::App* c = app.add_subcommand("merge-crops", "the crops of a frame (rice render --crop) joined into the frame");
     c->add_option("parts", merge_parts_, "output folders of rice render --crop")->required();
     c->add_option("--out", merge_out_, "output folder")->capture_default_str();
-    c->add_option("--exposure", merge_.exposure, "stops, for the PNG")->check(number_in(-30, 30))->capture_default_str();
-    add(c, [this] { experiments::validate(merge_settings()); }, [this] { merge_crops_command(merge_settings(), merge_out_); });
+    c->add_option("--exposure", merge_.exposure, "stops, for the PNG")
+        ->check(number_in(-30, 30))
+        ->capture_default_str();
+    add(c, [this] { experiments::validate(merge_settings()); },
+        [this] { merge_crops_command(merge_settings(), merge_out_); });
   }
 
   MergeCropsSettings merge_settings() const {

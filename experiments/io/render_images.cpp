@@ -103,7 +103,8 @@ ExrChannels read_exr_channels(const std::filesystem::path& path) {
     const std::size_t row = sizeof(float) * exr.data.width();
     Imf::FrameBuffer frame;
     for (auto c = file.header().channels().begin(); c != file.header().channels().end(); ++c) {
-      auto& plane = exr.channels.emplace_back(c.name(), std::vector<float>(row / sizeof(float) * exr.data.height())).second;
+      const std::size_t count = static_cast<std::size_t>(exr.data.width()) * exr.data.height();
+      auto& plane = exr.channels.emplace_back(c.name(), std::vector<float>(count)).second;
       char* base = reinterpret_cast<char*>(plane.data()) - window.min.x * sizeof(float) - window.min.y * row;
       frame.insert(c.name(), Imf::Slice(Imf::FLOAT, base, sizeof(float), row, 1, 1, 0.0));
     }

@@ -16,27 +16,14 @@
 #include "experiments/io/run_info.hpp"
 #include "experiments/io/video.hpp"
 #include "experiments/render/framing_box.hpp"
+#include "experiments/render/render_stage.hpp"
 #include "experiments/render/run_frames.hpp"
 #include "experiments/render/scene_pieces.hpp"
-#include "experiments/render/studio_lighting.hpp"
-#include "experiments/render/translucency_tables.hpp"
 #include "grains/mesh_io.hpp"
 #include "shading/path_tracer.hpp"
 
 namespace rice::experiments {
 namespace {
-
-/// The materials by index: 0 the grains' rice (the translucent model's, or the paper's CDRF),
-/// 1 the grey ground, 2 the dark glazed chawan, 3 the studio's table (a light linen), 4 its
-/// backdrop (a warm grey).
-std::vector<shading::Material> materials_of(double absorption_percent, RenderIntegrator integrator) {
-  return {integrator == RenderIntegrator::kTranslucent ? translucent_rice_material(absorption_percent)
-                                                       : rice_material(absorption_percent),
-          {.kind = shading::MaterialKind::kDiffuse, .albedo = shading::Color::Constant(0.35f)},
-          {.kind = shading::MaterialKind::kGlazed, .albedo = shading::Color(0.12f, 0.1f, 0.09f), .roughness = 0.08},
-          {.kind = shading::MaterialKind::kDiffuse, .albedo = shading::Color(0.42f, 0.37f, 0.31f)},
-          {.kind = shading::MaterialKind::kDiffuse, .albedo = shading::Color(0.3f, 0.29f, 0.27f)}};
-}
 
 std::vector<std::filesystem::path> mesh_files(const std::vector<std::filesystem::path>& inputs) {
   std::vector<std::filesystem::path> files;
@@ -67,25 +54,10 @@ std::vector<std::filesystem::path> frames_to_render(const RenderCommandSettings&
   return {s.frame > 0 ? run_frame_path(s.run, s.frame) : frames.back()};
 }
 
-/// The sun, the area lights and the sky (an image, or uniform).
-shading::Lights lights_of(const RenderCommandSettings& s) {
-  constexpr double kDegree = std::numbers::pi / 180.0;
-  shading::Lights lights;
-  if (s.sun_irradiance > 0.0) {
-    lights.suns.push_back({.direction = direction_from(s.sun_elevation_degrees, s.sun_azimuth_degrees).cast<float>(),
-                           .angular_radius = static_cast<float>(0.5 * s.sun_diameter_degrees * kDegree),
-                           .irradiance = shading::Color::Constant(static_cast<float>(s.sun_irradiance))});
-  }
-  lights.quads = s.area_lights;
-  if (!s.sky_image.empty()) {
-    shading::Image sky = read_exr(s.sky_image);
-    lights.environment.width = sky.width;
-    lights.environment.height = sky.height;
-    lights.environment.image = std::move(sky.pixels);
-  } else {
-    lights.environment.constant = shading::Color::Constant(static_cast<float>(s.sky_radiance));
-  }
-  return lights;
+/// N of a frame file frame_NNNN.csv.
+int frame_number(const std::filesystem::path& frame) {
+  const std::string stem = frame.stem().string();
+  return std::stoi(stem.substr(stem.find('_') + 1));
 }
 
 /// Where mesh i of n goes side by side: centred in cell i of a grid about √(1.5 n) cells
@@ -95,13 +67,14 @@ Eigen::Affine3d grid_place(const grains::Vertices& V, int i, int n, const Eigen:
   const Eigen::Vector3d lo = V.colwise().minCoeff(), hi = V.colwise().maxCoeff();
   const Eigen::Vector2d centre(cell.x() * (i % columns), -cell.y() * (i / columns));
   Eigen::Affine3d place = Eigen::Affine3d::Identity();
-  place.translation() = Eigen::Vector3d(centre.x() - 0.5 * (lo.x() + hi.x()), centre.y() - 0.5 * (lo.y() + hi.y()), -lo.z());
+  place.translation() =
+      Eigen::Vector3d(centre.x() - 0.5 * (lo.x() + hi.x()), centre.y() - 0.5 * (lo.y() + hi.y()), -lo.z());
   return place;
 }
 
 /// The meshes given, each its own prototype: in place, or side by side on a grid.
-void add_mesh_files(shading::RenderScene& scene, const RenderCommandSettings& s, const std::vector<std::filesystem::path>& files,
-                    std::vector<Eigen::AlignedBox3d>& boxes) {
+void add_mesh_files(shading::RenderScene& scene, const RenderCommandSettings& s,
+                    const std::vector<std::filesystem::path>& files, std::vector<Eigen::AlignedBox3d>& boxes) {
   Progress progress("render: meshes and curvature", static_cast<int>(files.size()));
   std::vector<grains::SurfaceMesh> meshes;
   Eigen::Vector2d cell = Eigen::Vector2d::Zero();  // side by side: 1.15 × the largest extents
@@ -122,48 +95,12 @@ void add_mesh_files(shading::RenderScene& scene, const RenderCommandSettings& s,
   progress.finish();
 }
 
-/// A run's chawan, glazed. Returns the box of the grains and the bowl.
-Eigen::AlignedBox3d add_bowl(shading::RenderScene& scene, const RenderCommandSettings& s,
-                             const Eigen::AlignedBox3d& grains_box) {
-  Eigen::AlignedBox3d box = grains_box;
-  if (!s.run.empty() && std::filesystem::exists(s.run / "chawan.obj")) {
-    const grains::SurfaceMesh bowl = grains::read_surface_mesh(s.run / "chawan.obj");
-    scene.add_instance(scene.add_prototype(bowl.V, bowl.F), Eigen::Affine3d::Identity(), 2);
-    for (Eigen::Index v = 0; v < bowl.V.rows(); ++v) box.extend(bowl.V.row(v).transpose());
-  }
-  return box;
-}
-
-/// What every image of one command is seen and lit by, set by the first image rendered (a
-/// run's last frame): the camera, the subject it frames and the lights.
-struct Stage {
-  shading::Camera camera;
-  Eigen::AlignedBox3d subject;
-  shading::Lights lights;
-};
-
-Stage stage_for(const RenderCommandSettings& s, const Eigen::AlignedBox3d& subject) {
-  const double aspect = static_cast<double>(s.render.width) / s.render.height;
-  Stage stage{s.camera ? *s.camera : framing_camera(subject, 35.0, -60.0, 30.0, aspect), subject, {}};
-  stage.lights = s.lighting == Lighting::kStudio ? studio_lights(subject, stage.camera.position, s.studio) : lights_of(s);
-  return stage;
-}
-
-/// Under the subject: the studio's table and backdrop, or a grey ground a square four times
-/// the subject's extent, just under its lowest point.
-void add_set(shading::RenderScene& scene, const RenderCommandSettings& s, const Stage& stage) {
-  if (!s.ground) return;
-  if (s.lighting == Lighting::kStudio) return add_studio_set(scene, stage.subject, stage.camera.position, 3, 4);
-  const Eigen::AlignedBox3d& box = stage.subject;
-  const double half = 2.0 * box.diagonal().head<2>().maxCoeff() + 1e-3, z = box.min().z() - 1e-6;
-  const Eigen::Vector2d c = box.center().head<2>();
-  add_ground(scene, c.x() - half, c.y() - half, c.x() + half, c.y() + half, z, 1);
-}
-
 /// What every image of one command shares, made once.
 struct RenderInputs {
   std::vector<std::filesystem::path> files, frames;
   RunVariants variants;
+  std::vector<ColliderDrawing> colliders;
+  double fps = 30.0;  ///< the run's
   std::vector<shading::Material> materials;
   shading::CdrfTable cdrf{513, 513};
 };
@@ -218,6 +155,7 @@ void render_image(const RenderCommandSettings& s, const RenderInputs& in, int k,
   const Eigen::AlignedBox3d box = add_bowl(scene, s, framing_box(grain_boxes));
   if (!stage) stage = stage_for(s, box);
   add_set(scene, s, *stage);
+  if (!s.run.empty()) add_colliders(scene, in.colliders, frame_number(in.frames[k]) / in.fps, stage->camera.position);
   scene.commit();
   shading::RenderStats stats;
   const shading::Image image = integrate(s, in, scene, *stage, stats);
@@ -253,8 +191,9 @@ std::string crop_cell(const shading::PixelWindow& crop) {
   return cell(crop.x0) + " " + cell(crop.y0) + " " + cell(crop.x1) + " " + cell(crop.y1);
 }
 
-void write_render_info(const RenderCommandSettings& s, const RenderInputs& in, const shading::Camera& camera, int images,
-                       const RenderTotals& totals, double wall_seconds, const std::filesystem::path& folder) {
+void write_render_info(const RenderCommandSettings& s, const RenderInputs& in, const shading::Camera& camera,
+                       int images, const RenderTotals& totals, double wall_seconds,
+                       const std::filesystem::path& folder) {
   const double rays = static_cast<double>(totals.stats.camera_rays + totals.stats.shadow_rays);
   const std::string meshes = s.run.empty()    ? cell(static_cast<long>(in.files.size()))
                              : s.every_frame ? "run " + s.run.string() + ", every frame"
@@ -346,6 +285,8 @@ shading::Camera render_command(const RenderCommandSettings& settings, const std:
   if (!settings.run.empty()) {
     inputs.frames = frames_to_render(settings);
     inputs.variants = read_run_variants(settings.run, settings.shading_radius);
+    inputs.colliders = read_collider_drawings(settings.run);
+    inputs.fps = run_fps(settings.run);
   }
   inputs.materials = materials_of(settings.absorption_percent, settings.integrator);
   make_output_folder(folder);
@@ -360,9 +301,8 @@ shading::Camera render_command(const RenderCommandSettings& settings, const std:
   }
   progress.finish();
   if (settings.video) {
-    const std::string first = inputs.frames.back().stem().string();  // frame_NNNN, the run's first
-    encode_video(folder, "frame_%04d.png", std::stoi(first.substr(first.find('_') + 1)), run_fps(settings.run),
-                 "render.mp4");
+    const int first = frame_number(inputs.frames.back());  // the frames ran last to first
+    encode_video(folder, "frame_%04d.png", first, inputs.fps, "render.mp4");
   }
   write_render_info(settings, inputs, stage->camera, images, totals, seconds_since(start), folder);
   return stage->camera;

@@ -117,6 +117,7 @@ struct MeshCollider {
   double grid_spacing = 1e-3;  ///< [m]
   bool hollow = false;         ///< the room inside the mesh, the solid outside (a mould)
   xpbd::Collider collider;     ///< motion, friction, removal time; shape and grid set at the start
+  std::string material = "plastic";  ///< how it is drawn (collider_drawing.hpp)
 };
 
 /// [render]: the last frame rendered after the simulation (rigid grains), by `rice render`'s
@@ -152,6 +153,7 @@ struct Scene {
   /// Colliders beside the container: planes, spheres, boxes and capsules, each with its
   /// keyframed motion, so a hand or a mould can press and withdraw; and meshes.
   std::vector<xpbd::Collider> colliders;
+  std::vector<std::string> collider_materials;  ///< colliders[k]'s, how it is drawn (collider_drawing.hpp)
   std::vector<MeshCollider> mesh_colliders;
   std::optional<SceneRender> render;  ///< none: no [render] section
 };

@@ -225,12 +225,15 @@ int read_collider(const toml::table& table, const std::string& source, const std
     section.require(false, "dynamic_friction", "at most static_friction (" + cell(c.static_friction) + ")");
   const toml::node* keyframes = section.claim("keyframes");
   c.motion = keyframes ? read_keyframes(section, *keyframes, source, name) : std::vector{read_pose(section, 0.0)};
+  const std::string material = section.choice("material");
   section.finish();
   if (!mesh) {
     scene.colliders.push_back(c);
+    scene.collider_materials.push_back(material);
     return -1;
   }
   mesh->collider = c;
+  mesh->material = material;
   scene.mesh_colliders.push_back(std::move(*mesh));
   return static_cast<int>(scene.mesh_colliders.size()) - 1;
 }

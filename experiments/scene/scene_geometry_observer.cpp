@@ -40,6 +40,14 @@ CsvTable placement_table(const World& world) {
 
 }  // namespace
 
+std::vector<ColliderDrawing> collider_drawings(const Scene& scene) {
+  std::vector<ColliderDrawing> drawings;
+  for (std::size_t k = 0; k < scene.colliders.size(); ++k)
+    drawings.push_back({collider_surface(scene.colliders[k]), scene.collider_materials.at(k), scene.colliders[k]});
+  for (const MeshCollider& m : scene.mesh_colliders) drawings.push_back({m.mesh, m.material, m.collider, m.hollow});
+  return drawings;
+}
+
 void SceneGeometryObserver::begin(const World& world) {
   if (chawan_) {
     const grains::SurfaceMesh bowl = grains::make_chawan(world.bowl);
@@ -55,6 +63,7 @@ void SceneGeometryObserver::begin(const World& world) {
       write_file_atomically(folder_ / "variants" / ("variant_" + std::to_string(i) + ".mesh"),
                             [&](std::ostream& out) { grains::write_medit(out, world.variants[i].grain.simulation); });
   write_file_atomically(folder_ / "grains.csv", placement_table(world).text());
+  write_collider_drawings(colliders_, folder_);
 }
 
 }  // namespace rice::experiments

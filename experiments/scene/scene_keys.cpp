@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "experiments/io/csv_table.hpp"
+#include "experiments/render/collider_drawing.hpp"
 #include "grains/cultivar.hpp"
 #include "xpbd/model.hpp"
 
@@ -182,6 +183,8 @@ std::vector<SceneKey> collider_keys() {
       number("colliders", "scale", open_low(0, 1e3), 1.0, "mesh: its coordinates times this"),
       flag("colliders", "hollow", false, "mesh: the room inside it, the solid outside (a mould)"),
       number("colliders", "grid_spacing_m", closed(2e-4, 1e-2), 1e-3, "mesh: its distance grid's spacing [m]"),
+      choice("colliders", "material", collider_material_names(), std::string("plastic"),
+             "how renders draw it: white plastic, pale wood, brushed steel or glazed white ceramic"),
       number("colliders", "removed_at_s", open_low(0, 1e4), {}, "the time it is taken away [s] (a mould lifted off)",
              "never"),
       number("colliders", "static_friction", closed(0, 10), {}, "μs against the grains", "the grains'"),

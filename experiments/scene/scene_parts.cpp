@@ -51,7 +51,8 @@ std::optional<double> drop_time(const Scene& scene) {
 
 std::vector<std::unique_ptr<Observer>> make_observers(const Scene& scene, const std::filesystem::path& folder) {
   std::vector<std::unique_ptr<Observer>> observers;
-  observers.push_back(std::make_unique<SceneGeometryObserver>(folder, scene.container.kind == Container::kChawan));
+  observers.push_back(std::make_unique<SceneGeometryObserver>(folder, scene.container.kind == Container::kChawan,
+                                                              collider_drawings(scene)));
   observers.push_back(std::make_unique<StatsObserver>(folder));
   observers.push_back(std::make_unique<FramesObserver>(folder));
   if (scene.effects.render_meshes) observers.push_back(std::make_unique<RenderMeshObserver>(folder));
