@@ -132,8 +132,10 @@ std::vector<ColliderDrawing> read_collider_drawings(const std::filesystem::path&
   std::vector<ColliderDrawing> drawings;
   for (const std::vector<double>& row : table.rows) {
     const auto value = [&](const char* name) { return row[table.column(name)]; };
-    const int k = static_cast<int>(value("collider"));
-    const int material = static_cast<int>(value("material"));
+    const double k_value = value("collider"), material_value = value("material");
+    if (!(std::abs(k_value) < 1e6 && std::abs(material_value) < 1e6))  // before the casts: no NaN, inf or huge
+      throw std::runtime_error(table_path.string() + ": a row's collider or material is not a small number");
+    const int k = static_cast<int>(k_value), material = static_cast<int>(material_value);
     if (k < 1 || k > static_cast<int>(drawings.size()) + 1 || material < 0 ||
         material >= static_cast<int>(collider_material_names().size()))
       throw std::runtime_error(table_path.string() + ": a row names collider " + std::to_string(k) + ", material " +

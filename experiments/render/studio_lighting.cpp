@@ -12,19 +12,22 @@ namespace {
 
 const shading::Color kStudioWarmWhite(1.0f, 0.92f, 0.82f);  // about 4000 K, normalised to red
 
-/// A square light of side `side` centred at `centre`, facing `target`, with radiance L such
-/// that its irradiance at the target is about E: E ≈ L Ω, Ω = side² / d² (a light a few
-/// sizes away is small enough for the solid-angle estimate).
+/// A square light of side `side` centred at `centre`, facing `target`, with the radiance L that
+/// gives `irradiance` E at the target on a surface facing it. On the axis of a square of half
+/// side a at distance d, with X = a/d, the four quarters' form factors (Howell's catalogue,
+/// configuration C-11, a differential area to a parallel rectangle from a corner) sum to
+///   E = 4 L X/√(1+X²) · atan(X/√(1+X²)).
 shading::QuadLight softbox(const Eigen::Vector3d& centre, const Eigen::Vector3d& target, double side, double irradiance,
                            const shading::Color& colour) {
   const Eigen::Vector3d n = (target - centre).normalized();  // the side it shines to
   const Eigen::Vector3d t1 = n.cross(Eigen::Vector3d::UnitZ()).normalized(), t2 = t1.cross(n);  // t2 × t1 = n
-  const double d = (target - centre).norm(), solid_angle = side * side / (d * d);
+  const double X = 0.5 * side / (target - centre).norm(), q = X / std::sqrt(1.0 + X * X);
+  const double e_per_radiance = 4.0 * q * std::atan(q);
   shading::QuadLight quad;
   quad.corner = (centre - 0.5 * side * (t1 + t2)).cast<float>();
   quad.edge_u = (side * t1).cast<float>();
   quad.edge_v = (side * t2).cast<float>();
-  quad.radiance = colour * static_cast<float>(irradiance / solid_angle);
+  quad.radiance = colour * static_cast<float>(irradiance / e_per_radiance);
   return quad;
 }
 
@@ -67,7 +70,7 @@ shading::Lights studio_lights(const Eigen::AlignedBox3d& subject, const Eigen::V
   shading::Lights lights;
   lights.quads.push_back(softbox(at(lighting.key_elevation_degrees, lighting.key_azimuth_degrees), c, side,
                                  lighting.key_irradiance, kStudioWarmWhite));
-  lights.quads.push_back(softbox(at(20.0, -lighting.key_azimuth_degrees - 30.0), c, side,
+  lights.quads.push_back(softbox(at(20.0, -45.0), c, side,
                                  lighting.fill_ratio * lighting.key_irradiance, kStudioWarmWhite));
   lights.environment.constant = kStudioWarmWhite * static_cast<float>(lighting.room_radiance);
   return lights;

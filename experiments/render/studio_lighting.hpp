@@ -16,7 +16,7 @@
 namespace rice::experiments {
 
 struct StudioLighting {
-  double key_irradiance = 3.0;    ///< at the subject's centre, facing the key (the sun's default)
+  double key_irradiance = 3.0;    ///< at the subject's centre, facing the key (the sun's default); the warm white's red
   double fill_ratio = 0.25;       ///< fill irradiance / key irradiance
   double key_elevation_degrees = 45.0;
   double key_azimuth_degrees = 60.0;  ///< from the camera's side, towards its left (positive) or right

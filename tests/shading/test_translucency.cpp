@@ -12,6 +12,7 @@
 #include <random>
 
 #include "shading/material.hpp"
+#include "shading/render_scene.hpp"
 #include "shading/smooth_normals.hpp"
 #include "shading/thickness.hpp"
 #include "tests/shading/test_meshes.hpp"
