@@ -83,6 +83,9 @@ class StudyCommands : public CommandFamily {
     c->add_option("--shading-radius-mm", s.shading_radius_mm,
                   "shading normals and curvature smoothed over this radius [mm] (0: the mesh's own)")
         ->check(number_in(0, 10))->capture_default_str();
+    c->add_option("--curvature-radius-mm", s.curvature_radius_mm,
+                  "curvature smoothed over this radius [mm], at most --shading-radius-mm")
+        ->check(number_in(0, 10))->capture_default_str();
     c->add_option("--curvature-rings", s.curvature_rings, "rings of the curvature's jet fit")->check(number_in(1, 20))
         ->capture_default_str();
     c->add_option("--seed", s.seed, "random seed")->check(seed_value())->capture_default_str();

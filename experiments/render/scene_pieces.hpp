@@ -20,15 +20,18 @@ shading::Material rice_material(double absorption_percent);
 /// water-content model, isotropic scattering with μs = μs' (the similarity relation).
 shading::Medium grain_medium(double absorption_percent);
 
-/// [m] The scale light averages a grain's surface over, for shading normals and curvature
-/// (shading/smooth_normals.hpp): about two mean free paths 1/μs′ at W 20% (0.19 mm), twice the
-/// largest surface bump's radius. The bumps' specks go and the silhouette stays; `rice study
-/// cdrf --shading-radius-mm` and docs/rendering.md measure it.
-inline constexpr double kShadingRadius = 0.4e-3;
+/// [m] The scales light averages a grain's surface over (shading/smooth_normals.hpp): the
+/// shading normals over 1.2 mm, the curvature (the CDRF's σ = σ0 κ) over 0.4 mm, about two mean
+/// free paths 1/μs′ at W 20% and twice the largest surface bump's radius. The bumps' specks go
+/// and the silhouette stays. Measured against the random-walk reference per vertex (`rice study
+/// translucency --shading-radius-mm --curvature-radius-mm`, docs/rendering.md): both models
+/// gain from the wider normals; the CDRF loses when its curvature is averaged wider than 0.4 mm.
+inline constexpr double kShadingRadius = 1.2e-3;
+inline constexpr double kCurvatureRadius = 0.4e-3;
 
-/// What a grain mesh is shaded with, per vertex: the jet-fitted mean curvature and the normals
-/// smoothed over `shading_radius` (0: the mesh's own), and the thickness for the translucent
-/// model.
+/// What a grain mesh is shaded with, per vertex: the normals smoothed over `shading_radius`,
+/// the jet-fitted mean curvature over the smaller of it and kCurvatureRadius (0: the mesh's
+/// own, both), and the thickness for the translucent model.
 struct GrainShading {
   Eigen::VectorXd curvature, thickness;
   shading::MeshVertices normals;

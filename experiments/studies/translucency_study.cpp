@@ -47,8 +47,9 @@ GrainGeometry grain_geometry(const std::string& cultivar, int index, std::uint64
   const shading::MeshTriangles& F = grain.render.F;
   const double radius = 1e-3 * s.shading_radius_mm;
   const Eigen::VectorXd H = shading::vertex_mean_curvature(V, F, {.rings = s.curvature_rings});
+  const double curvature_radius = std::min(radius, 1e-3 * s.curvature_radius_mm);
   GrainGeometry g{cultivar, index, V, shading::smoothed_vertex_normals(V, F, radius), F,
-                  shading::smoothed_vertex_values(V, F, H, radius), shading::vertex_thickness(V, F), {}};
+                  shading::smoothed_vertex_values(V, F, H, curvature_radius), shading::vertex_thickness(V, F), {}};
   shading::RenderScene scene;
   scene.add_instance(scene.add_prototype(g.V, g.F), Eigen::Affine3d::Identity(), 0);
   scene.commit();

@@ -38,6 +38,7 @@ struct TranslucencyStudySettings {
   double smoothing = 1e-4;
   /// shading normals and curvature smoothed over this ball (smooth_normals.hpp), as renders do
   double shading_radius_mm = 1e3 * kShadingRadius;
+  double curvature_radius_mm = 1e3 * kCurvatureRadius;  ///< the curvature's, at most shading_radius_mm
   int curvature_rings = 2;        ///< the jet fit's neighbourhood for κ (curvature.hpp)
   std::uint64_t seed = 1;
 };
