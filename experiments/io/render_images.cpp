@@ -122,20 +122,19 @@ const std::vector<float>& exr_channel(const ExrChannels& exr, const std::string&
   throw std::runtime_error("exr: no channel " + name);
 }
 
+shading::Image exr_beauty(const ExrChannels& exr) {
+  shading::Image image(exr.data.width(), exr.data.height());
+  for (int c = 0; c < 3; ++c) {
+    const std::vector<float>& plane = exr_channel(exr, std::string(1, "RGB"[c]));
+    for (std::size_t i = 0; i < plane.size(); ++i) image.pixels[i][c] = plane[i];
+  }
+  return image;
+}
+
 shading::Image read_exr(const std::filesystem::path& path) {
+  const ExrChannels exr = read_exr_channels(path);
   try {
-    Imf::InputFile file(path.c_str());
-    const Imath::Box2i window = file.header().dataWindow();
-    const int width = window.max.x - window.min.x + 1, height = window.max.y - window.min.y + 1;
-    shading::Image image(width, height);
-    Imf::FrameBuffer frame;
-    const std::size_t pixel = sizeof(Eigen::Array3f), row = pixel * width;
-    char* base = reinterpret_cast<char*>(image.pixels.data()) - (window.min.x * pixel + window.min.y * row);
-    for (int c = 0; c < 3; ++c)
-      frame.insert(std::string(1, "RGB"[c]), Imf::Slice(Imf::FLOAT, base + c * sizeof(float), pixel, row, 1, 1, 0.0));
-    file.setFrameBuffer(frame);
-    file.readPixels(window.min.y, window.max.y);
-    return image;
+    return exr_beauty(exr);
   } catch (const std::exception& e) {
     throw std::runtime_error("read_exr: " + path.string() + ": " + e.what());
   }

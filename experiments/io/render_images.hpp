@@ -45,6 +45,10 @@ const std::vector<float>& exr_channel(const ExrChannels& exr, const std::string&
 /// Linear 32-bit float R, G, B channels, written atomically; throws std::runtime_error.
 void write_exr(const std::filesystem::path& path, const shading::Image& image);
 
+/// The R, G, B channels of the data window as an image; throws std::runtime_error when one
+/// is missing.
+shading::Image exr_beauty(const ExrChannels& exr);
+
 /// Reads an OpenEXR file's R, G, B channels as linear radiance (an environment image).
 shading::Image read_exr(const std::filesystem::path& path);
 

@@ -28,16 +28,6 @@ std::set<std::string> exr_names(const std::filesystem::path& part) {
   return names;
 }
 
-/// Linear RGB of a whole frame's channels.
-shading::Image beauty(const ExrChannels& exr) {
-  shading::Image image(exr.width, exr.height);
-  for (int c = 0; c < 3; ++c) {
-    const std::vector<float>& plane = exr_channel(exr, std::string(1, "RGB"[c]));
-    for (std::size_t i = 0; i < plane.size(); ++i) image.pixels[i][c] = plane[i];
-  }
-  return image;
-}
-
 }  // namespace
 
 void validate(const MergeCropsSettings& s) {
@@ -99,7 +89,7 @@ void merge_crops_command(const MergeCropsSettings& s, const std::filesystem::pat
     }
     const ExrChannels frame = merge_crops(crops, name);
     write_exr(folder / name, frame);
-    write_png(folder / std::filesystem::path(name).replace_extension(".png"), tone_map(beauty(frame), s.exposure));
+    write_png(folder / std::filesystem::path(name).replace_extension(".png"), tone_map(exr_beauty(frame), s.exposure));
   }
   for (const auto& part : s.parts) parts += (parts.empty() ? "" : " ") + part.string();
   write_file_atomically(folder / "run_info.txt", run_info({{"command", "merge-crops"},
