@@ -34,9 +34,11 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # Four more took 112 s, 42 s, 34 s and 32 s here and repeat code with more work: the 10 s
 # sticky pile (SoftPileEnergy; GranularPile and GrainSimulation run its solver and bonds),
 # ConvergenceStudyQuick (ConvergenceStudy runs its solvers), two grains pressed by both
-# solvers (ContactStudy.Hertz) and the sphere-mesh walk (SubsurfaceBake.SameSeed).
+# solvers (ContactStudy.Hertz) and the sphere-mesh walk (SubsurfaceBake.SphereMesh).
+# RenderCommands took 320 s here: its renders and studies run the renderer, the path tracer,
+# the AOVs and the crop merge that test_shading and the ExrChannels and MergeCrops tests run.
 skipped='AngleOfRepose.CohesionRaisesTheAngleOfAPouredHeap|Compression.FiveHundredSoftGrains'
 skipped+='|Energy.DampedMotionNeverGainsEnergy|SceneDigests|TetQualityStudyQuick|SceneConvergenceStudyQuick'
-skipped+='|ShippedScenes.EachRunsAFrameAsItShips|ContactStudyQuick|Table1.RunsTheFourScenes|SceneCommand'
+skipped+='|ShippedScenes.EachRunsAFrameAsItShips|ContactStudyQuick|Table1.RunsTheFourScenes|SceneCommand|RenderCommands'
 skipped+='|SoftPileEnergy|ConvergenceStudyQuick|ContactStudy.BothSolversPressTwoGrains|SubsurfaceBake.SphereMesh'
 ctest --test-dir build-sanitize --output-on-failure -j "$(nproc)" -E "$skipped"

@@ -28,7 +28,7 @@ class RenderCommands : public CommandFamily {
     c->add_option("--frame", render_.frame, "the run's frame (0: the last)")->check(number_in(0, 1e6))
         ->capture_default_str();
     c->add_flag("--every-frame", render_.every_frame, "every frame of the run into frame_NNNN.png, framed as the last");
-    c->add_flag("--video", render_.video, "with --every-frame: also render.mp4 (H.264, by ffmpeg) at the run's frame rate");
+    c->add_flag("--video", render_.video, "with --every-frame: also render.mp4 (H.264, by ffmpeg) and contact_sheet.png of 12 frames");
     c->add_flag("--deformed-curvature", deformed_curvature_,
                 "soft grains drawn as their own mesh shaded with its curvature (default: their rest curvature; with "
                 "--soft-instance-tolerance 0, every soft grain)");

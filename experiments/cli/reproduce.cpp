@@ -79,7 +79,9 @@ std::vector<std::filesystem::path> files_of(const std::filesystem::path& folder,
   for (auto it = std::filesystem::recursive_directory_iterator(folder, error);
        !error && it != std::filesystem::recursive_directory_iterator(); it.increment(error)) {
     const auto& path = it->path();
-    if (path.extension() == extension && path.string().find("/frames/") == std::string::npos)
+    // Not a run's frames (frames/frame_NNNN.csv) nor a video's (frame_NNNN.png).
+    if (path.extension() == extension && path.string().find("/frames/") == std::string::npos &&
+        !path.filename().string().starts_with("frame_"))
       found.push_back(std::filesystem::relative(path, out));
   }
   std::sort(found.begin(), found.end());
@@ -97,7 +99,7 @@ std::vector<ReproduceStep> reproduce_steps(const std::filesystem::path& out, boo
   heap_dry.insert(heap_dry.end(), {"--set", "effects.cohesion=false"});
   // Each step: its title, its command (--out added below), its folder, the step it reads and
   // the files it reads.
-  const std::vector<ReproduceStep> steps{
+  std::vector<ReproduceStep> steps{
       {"XPBD stiffness: compliance against the analytic stiffness", {"study", "xpbd-stiffness"}, "xpbd-stiffness", "",
        {}},
       {"Damped oscillator: XPBD and the reference against the analytic decay", {"study", "oscillator"}, "oscillator",
@@ -154,6 +156,12 @@ std::vector<ReproduceStep> reproduce_steps(const std::filesystem::path& out, boo
         "--eye", "0", "-0.075", "0.085", "--look-at", "0", "0", "0.022", "--fov", "35"},
        "render-chawan", "table1", {}},
   };
+  // Every frame of each paper scene's run, as a video and a contact sheet.
+  for (const std::string scene : {"shari", "chawan", "onigiri", "bunny"})
+    steps.push_back({"Video: the " + scene + " run, every frame at 480 x 270, 8 spp (render.mp4)",
+                     {"render", "--run", (out / "table1" / scene).string(), "--every-frame", "--video", "--width", "480",
+                      "--height", "270", "--spp", "8"},
+                     "video-" + scene, "table1", {}});
   std::vector<ReproduceStep> result;
   for (ReproduceStep step : steps) {
     step.folder = out / step.folder;
@@ -217,6 +225,7 @@ void reproduce_command(const ReproduceSettings& settings, const std::filesystem:
       index += text.str() + "\n";
     }
     for (const auto& image : files_of(step.folder, out, ".png")) index += "![" + image.string() + "](" + image.string() + ")\n";
+    for (const auto& video : files_of(step.folder, out, ".mp4")) index += "\nVideo: [" + video.string() + "](" + video.string() + ")\n";
     const auto tables = files_of(step.folder, out, ".csv");
     if (!tables.empty()) {
       index += "\nData:";

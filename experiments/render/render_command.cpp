@@ -303,6 +303,8 @@ shading::Camera render_command(const RenderCommandSettings& settings, const std:
   if (settings.video) {
     const int first = frame_number(inputs.frames.back());  // the frames ran last to first
     encode_video(folder, "frame_%04d.png", first, inputs.fps, "render.mp4");
+    write_contact_sheet(folder, "frame_%04d.png", first, images, 12, std::min(settings.render.width, 320),
+                        "contact_sheet.png");
   }
   write_render_info(settings, inputs, stage->camera, images, totals, seconds_since(start), folder);
   return stage->camera;

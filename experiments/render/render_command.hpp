@@ -8,8 +8,8 @@
 // and a uniform or image sky over a ground, from a camera given on the command line or framed
 // automatically.
 // Writes render.png (tone mapped), render.exr (linear, with the AOV layers of
-// shading/aovs.hpp) — frame_NNNN.png and .exr for every frame of a run, and render.mp4 of
-// them with `video` — and run_info.txt (settings, the camera, ray counts, rays per second,
+// shading/aovs.hpp) — frame_NNNN.png and .exr for every frame of a run, and render.mp4 and
+// contact_sheet.png of them with `video` — and run_info.txt (settings, the camera, ray counts, rays per second,
 // wall time). With a crop window, the images are that part of the frame; its EXR's data
 // window places it in the frame for merge_crops (crop_merge.hpp).
 #pragma once
@@ -63,7 +63,7 @@ struct RenderCommandSettings {
   /// A run's every frame, into frame_NNNN.png and .exr, with one camera: the given one or the
   /// last frame's framing. The variants' curvature and the CDRF table are made once.
   bool every_frame = false;
-  bool video = false;  ///< with every_frame: the frames also as render.mp4 at the run's frame rate (io/video.hpp)
+  bool video = false;  ///< with every_frame: render.mp4 at the run's frame rate and contact_sheet.png (io/video.hpp)
   SoftGrainDrawing soft;  ///< how a soft run's grains are drawn
   double shading_radius = kShadingRadius;  ///< [m] grains' normals and curvature smoothed over it (scene_pieces.hpp)
 };

@@ -154,7 +154,7 @@ std::vector<SceneKey> effect_and_render_keys() {
       number("render", "sky_radiance", closed(0, 1e3), 0.3, "the uniform sky's radiance"),
       flag("render", "ground", true, "the studio's table and backdrop, or the sun's grey plane under the grains"),
       flag("render", "every_frame", false, "also render every frame into render_frames/, with the last frame's camera"),
-      flag("render", "video", false, "also render every frame, and render_frames/render.mp4 of them (H.264, by ffmpeg)"),
+      flag("render", "video", false, "also render every frame, render_frames/render.mp4 (H.264, by ffmpeg) and contact_sheet.png"),
       vector3("render", "eye_m", 1e3, {}, "the camera's position [m] (give look_at_m too)", "framed on the grains"),
       vector3("render", "look_at_m", 1e3, {}, "the point the camera looks at [m] (give eye_m too)", "framed on the grains"),
       number("render", "fov_deg", open(0, 180), 30.0, "the vertical field of view [°]"),

@@ -56,12 +56,18 @@ endif()
 run(run "${SCENES}/drop.toml" --set grains.count=3 --set solver.frames=4 --set render.width=16 --set render.height=16
     --set render.samples_per_pixel=1 --out "${OUT}/run")
 run(render --run "${OUT}/run" --every-frame --video --width 32 --height 18 --spp 1 --out "${OUT}/video")
-expect_files("${OUT}/video" frame_0001.png frame_0004.png render.mp4 run_info.txt)
+expect_files("${OUT}/video" frame_0001.png frame_0004.png render.mp4 contact_sheet.png run_info.txt)
 execute_process(COMMAND ffprobe -v error -select_streams v:0 -count_frames
                         -show_entries stream=codec_name,pix_fmt,nb_read_frames -of csv=p=0 "${OUT}/video/render.mp4"
                 OUTPUT_VARIABLE probe OUTPUT_STRIP_TRAILING_WHITESPACE RESULT_VARIABLE probed)
 if(NOT probed EQUAL 0 OR NOT probe STREQUAL "h264,yuv420p,4")
   message(FATAL_ERROR "render.mp4: ffprobe says '${probe}' (exit ${probed}), not h264,yuv420p,4")
+endif()
+# The contact sheet: all four frames (fewer than 12), one row of 32-pixel tiles 4 apart.
+execute_process(COMMAND ffprobe -v error -show_entries stream=width,height -of csv=p=0
+                        "${OUT}/video/contact_sheet.png" OUTPUT_VARIABLE sheet OUTPUT_STRIP_TRAILING_WHITESPACE)
+if(NOT sheet STREQUAL "140,18")
+  message(FATAL_ERROR "contact_sheet.png is '${sheet}' pixels, not 4 tiles of 32 x 18: 140,18")
 endif()
 run(figure 13 --width 120 --height 40 --spp 2 --path-spp 2 --out "${OUT}/figure13")
 expect_files("${OUT}/figure13" figure13_cdrf.png figure13_translucent.exr figure13_path.exr figure13.csv run_info.txt)

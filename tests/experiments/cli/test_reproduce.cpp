@@ -2,7 +2,7 @@
 // once and writes its stamp; a second run skips them all; --force and --only choose what
 // runs; a step that reads another's output reruns when that one ran, and one that reads a
 // scene file when the file changes; a failing step stops the run naming it; out/index.md
-// holds each command, its figures and its tables.
+// holds each command, its figures, videos and tables.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -29,6 +29,8 @@ struct FakeRice {
     std::filesystem::create_directories(folder);
     std::ofstream(folder / "plot.png") << "png";
     std::ofstream(folder / "data.csv") << "x\n1\n";
+    std::ofstream(folder / "frame_0001.png") << "png";  // a video's frame: not listed
+    std::ofstream(folder / "render.mp4") << "mp4";
     return 0;
   }
 };
@@ -58,6 +60,8 @@ TEST(Reproduce, RunsEachStepOnceThenSkipsWhatIsUpToDate) {
   EXPECT_NE(index.find("`" + table1 + "` — ran in"), std::string::npos) << index;
   EXPECT_NE(index.find("![table1/plot.png](table1/plot.png)"), std::string::npos);
   EXPECT_NE(index.find("[table1/data.csv](table1/data.csv)"), std::string::npos);
+  EXPECT_NE(index.find("Video: [table1/render.mp4](table1/render.mp4)"), std::string::npos);
+  EXPECT_EQ(index.find("frame_0001.png"), std::string::npos) << "a video's frames fill the index";
 
   rice.ran.clear();
   reproduce_command(settings, out, call);  // everything is up to date
@@ -66,8 +70,9 @@ TEST(Reproduce, RunsEachStepOnceThenSkipsWhatIsUpToDate) {
 
   write_file_atomically(scenes / "press.toml", "# a harder press\n");  // a scene file edited...
   reproduce_command(settings, out, call);  // ...reruns the steps that read it
-  // the render of table 1's chawan and the curvature study of the press too
-  EXPECT_EQ(rice.ran, (std::vector<std::string>{"table1", "press", "soft-curvature", "render-chawan"}));
+  // the render of table 1's chawan, the scenes' videos and the curvature study of the press too
+  EXPECT_EQ(rice.ran, (std::vector<std::string>{"table1", "press", "soft-curvature", "render-chawan", "video-shari",
+                                                "video-chawan", "video-onigiri", "video-bunny"}));
 
   rice.ran.clear();
   ReproduceSettings only = settings;
