@@ -6,6 +6,9 @@
 #include <unordered_map>
 #include <vector>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 namespace rice::shading {
 namespace {
 
@@ -32,7 +35,8 @@ MeshVertices area_weighted_normals(const MeshVertices& V, const MeshTriangles& F
 }
 
 /// For each vertex v, visit(v, u, w) for every vertex u within `radius` of it that faces its
-/// way (n_u · n_v > 0), w the Gaussian of standard deviation radius/2 in their distance.
+/// way (n_u · n_v > 0), w the Gaussian of standard deviation radius/2 in their distance; the
+/// vertices v in parallel, so `visit` may write v's entries only.
 template <class Visit>
 void for_each_ball_neighbour(const MeshVertices& V, const MeshVertices& unit, double radius, Visit visit) {
   const auto key = [&](const Eigen::RowVector3d& p) {
@@ -42,20 +46,23 @@ void for_each_ball_neighbour(const MeshVertices& V, const MeshVertices& unit, do
   std::unordered_map<CellKey, std::vector<int>, CellHash> grid;
   for (Eigen::Index v = 0; v < V.rows(); ++v) grid[key(V.row(v))].push_back(static_cast<int>(v));
   const double inverse_two_s2 = 1.0 / (2.0 * 0.25 * radius * radius);  // s = radius / 2
-  for (Eigen::Index v = 0; v < V.rows(); ++v) {
-    const CellKey c = key(V.row(v));
-    for (long long dx = -1; dx <= 1; ++dx)
-      for (long long dy = -1; dy <= 1; ++dy)
-        for (long long dz = -1; dz <= 1; ++dz) {
-          const auto it = grid.find({c.x + dx, c.y + dy, c.z + dz});
-          if (it == grid.end()) continue;
-          for (const int u : it->second) {
-            const double d2 = (V.row(u) - V.row(v)).squaredNorm();
-            if (d2 > radius * radius || unit.row(u).dot(unit.row(v)) <= 0.0) continue;
-            visit(static_cast<int>(v), u, std::exp(-d2 * inverse_two_s2));
+  // Each vertex's visits are its own (visit writes v's entries only): vertices in parallel.
+  tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, V.rows(), 256), [&](const auto& range) {
+    for (Eigen::Index v = range.begin(); v < range.end(); ++v) {
+      const CellKey c = key(V.row(v));
+      for (long long dx = -1; dx <= 1; ++dx)
+        for (long long dy = -1; dy <= 1; ++dy)
+          for (long long dz = -1; dz <= 1; ++dz) {
+            const auto it = grid.find({c.x + dx, c.y + dy, c.z + dz});
+            if (it == grid.end()) continue;
+            for (const int u : it->second) {
+              const double d2 = (V.row(u) - V.row(v)).squaredNorm();
+              if (d2 > radius * radius || unit.row(u).dot(unit.row(v)) <= 0.0) continue;
+              visit(static_cast<int>(v), u, std::exp(-d2 * inverse_two_s2));
+            }
           }
-        }
-  }
+    }
+  });
 }
 
 void check_radius(double radius, const char* who) {

@@ -6,6 +6,7 @@
 #include "experiments/cli/option_checks.hpp"
 #include "experiments/studies/cdrf_study.hpp"
 #include "experiments/studies/contact_study.hpp"
+#include "experiments/studies/frame_cost_study.hpp"
 #include "experiments/studies/convergence_study.hpp"
 #include "experiments/studies/grain_substep_study.hpp"
 #include "experiments/studies/oscillator_study.hpp"
@@ -33,6 +34,7 @@ class StudyCommands : public CommandFamily {
     add_path_depth(study);
     add_soft_curvature(study);
     add_soft_instances(study);
+    add_frame_cost(study);
     add_pour_substeps(study);
     add_grain_substeps(study);
     add_tet_quality(study);
@@ -192,6 +194,40 @@ class StudyCommands : public CommandFamily {
         ->check(number_in(0, 1))->capture_default_str();
     add(c, [this] { experiments::validate(soft_instances_); },
         [this] { soft_instance_study_command(soft_instances_, soft_instances_out_); });
+  }
+
+  void add_frame_cost(CLI::App* study) {
+    CLI::App* c = study->add_subcommand(
+        "frame-cost", "a run's frame at full size: the equal-error sample count, and each model's time for the frame");
+    FrameCostStudySettings& s = frame_cost_;
+    c->add_option("--run", s.run, "a scene run's output folder (rice run)")->required();
+    c->add_option("--frame", s.frame, "the run's frame (0: the last)")->check(number_in(0, 1e6))->capture_default_str();
+    c->add_option("--width", s.width, "the frame's pixels")->check(number_in(1, 16384))->capture_default_str();
+    c->add_option("--height", s.height, "the frame's pixels")->check(number_in(1, 16384))->capture_default_str();
+    c->add_option("--window", window_, "width height of the window rendered at the frame's centre")->expected(2)
+        ->check(number_in(1, 16384))->capture_default_str();
+    c->add_option("--reference-spp", s.reference_spp, "Sobol samples of the reference")->check(number_in(1, 1 << 20))
+        ->capture_default_str();
+    c->add_option("--paper-spp", s.paper_spp, "independent samples, the paper's sampling")->check(number_in(1, 1 << 20))
+        ->capture_default_str();
+    c->add_option("--sobol-spp", s.sobol_spp, "Sobol sample counts, ascending")->check(number_in(1, 1 << 20))
+        ->capture_default_str();
+    c->add_option("--cost-spp", s.cost_spp, "samples of each model's timed render")->check(number_in(1, 1 << 20))
+        ->capture_default_str();
+    c->add_option("--integrator", frame_cost_integrator_, "the model under study: cdrf or translucent")
+        ->check(CLI::IsMember({"cdrf", "translucent"}))->capture_default_str();
+    c->add_option("--bounces", s.bounces, "its bounces of light between surfaces")->check(number_in(0, 64))
+        ->capture_default_str();
+    c->add_option("--out", frame_cost_out_, "output folder")->capture_default_str();
+    const auto settings = [this] {
+      FrameCostStudySettings f = frame_cost_;
+      f.window_width = window_[0];
+      f.window_height = window_[1];
+      f.integrator = frame_cost_integrator_ == "cdrf" ? RenderIntegrator::kCdrf : RenderIntegrator::kTranslucent;
+      return f;
+    };
+    add(c, [settings] { experiments::validate(settings()); },
+        [this, settings] { frame_cost_study_command(settings(), frame_cost_out_); });
   }
 
   void add_pour_substeps(CLI::App* study) {
@@ -379,6 +415,9 @@ class StudyCommands : public CommandFamily {
   std::string soft_curvature_out_ = "out/soft-curvature";
   SoftInstanceStudySettings soft_instances_;
   std::string soft_instances_out_ = "out/soft-instances";
+  FrameCostStudySettings frame_cost_;
+  std::vector<int> window_{480, 270};
+  std::string frame_cost_out_ = "out/frame-cost", frame_cost_integrator_ = "translucent";
   PourSubstepStudySettings pour_substeps_;
   std::string pour_substeps_out_ = "out/pour-substeps", pour_substeps_body_ = "rigid";
   bool pour_substeps_no_cohesion_ = false;

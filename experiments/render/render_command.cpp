@@ -171,19 +171,6 @@ void render_image(const RenderCommandSettings& s, const RenderInputs& in, int k,
   totals.prototypes = scene.prototype_count();
 }
 
-std::string integrator_name(RenderIntegrator integrator) {
-  switch (integrator) {
-    case RenderIntegrator::kCdrf: return "cdrf";
-    case RenderIntegrator::kTranslucent: return "translucent";
-    case RenderIntegrator::kPath: return "path";
-  }
-  return "?";
-}
-
-std::string sampler_name(shading::SamplerKind kind) {
-  return kind == shading::SamplerKind::kSobol ? "sobol" : kind == shading::SamplerKind::kStratified ? "stratified" : "independent";
-}
-
 std::string vector_cell(const Eigen::Vector3d& v) { return cell(v.x()) + " " + cell(v.y()) + " " + cell(v.z()); }
 
 std::string crop_cell(const shading::PixelWindow& crop) {
@@ -238,6 +225,19 @@ void write_render_info(const RenderCommandSettings& s, const RenderInputs& in, c
 
 }  // namespace
 
+std::string integrator_name(RenderIntegrator integrator) {
+  switch (integrator) {
+    case RenderIntegrator::kCdrf: return "cdrf";
+    case RenderIntegrator::kTranslucent: return "translucent";
+    case RenderIntegrator::kPath: return "path";
+  }
+  return "?";
+}
+
+std::string sampler_name(shading::SamplerKind kind) {
+  return kind == shading::SamplerKind::kSobol ? "sobol" : kind == shading::SamplerKind::kStratified ? "stratified" : "independent";
+}
+
 void validate(const RenderCommandSettings& s) {
   const auto files = mesh_files(s.meshes);
   if (files.empty() == s.run.empty())
@@ -277,7 +277,7 @@ void validate(const RenderCommandSettings& s) {
     throw std::invalid_argument("render: --sky-image " + s.sky_image.string() + ": no such file");
 }
 
-shading::Camera render_command(const RenderCommandSettings& settings, const std::filesystem::path& folder) {
+RenderOutcome render_command(const RenderCommandSettings& settings, const std::filesystem::path& folder) {
   validate(settings);
   const auto start = std::chrono::steady_clock::now();
   RenderInputs inputs;
@@ -307,7 +307,7 @@ shading::Camera render_command(const RenderCommandSettings& settings, const std:
                         "contact_sheet.png");
   }
   write_render_info(settings, inputs, stage->camera, images, totals, seconds_since(start), folder);
-  return stage->camera;
+  return {stage->camera, totals.stats};
 }
 
 void validate(const RunFrameImage& image) {

@@ -71,8 +71,17 @@ struct RenderCommandSettings {
 /// Throws std::invalid_argument naming the setting that is out of range or the file missing.
 void validate(const RenderCommandSettings& settings);
 
-/// Renders into `folder`; returns the camera it used (the framed one when none was given).
-shading::Camera render_command(const RenderCommandSettings& settings, const std::filesystem::path& folder);
+/// "cdrf", "translucent", "path"; "independent", "stratified", "sobol".
+std::string integrator_name(RenderIntegrator integrator);
+std::string sampler_name(shading::SamplerKind kind);
+
+struct RenderOutcome {
+  shading::Camera camera;     ///< the camera it used (the framed one when none was given)
+  shading::RenderStats stats;  ///< rays and seconds of the rendering itself, every image's
+};
+
+/// Renders into `folder`.
+RenderOutcome render_command(const RenderCommandSettings& settings, const std::filesystem::path& folder);
 
 /// One frame of a scene run at a preview size: what the soft-grain studies render.
 struct RunFrameImage {

@@ -173,7 +173,7 @@ SceneResult run_scene_command(const std::filesystem::path& scene_file, const std
   if (scene.render) {
     const auto start = std::chrono::steady_clock::now();
     RenderCommandSettings settings = scene_render_settings(*scene.render, scene, folder);
-    settings.camera = render_command(settings, folder / "render");
+    settings.camera = render_command(settings, folder / "render").camera;
     result.render_seconds = seconds_since(start);
     if (scene.render->every_frame || scene.render->video) {
       settings.every_frame = true;

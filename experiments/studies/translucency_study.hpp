@@ -12,7 +12,7 @@
 // against the bake, over the area-weighted mean M/E, and the bake's own noise (two seeds).
 //
 // Writes translucency_fit.csv (a row per water content, cultivar, grain and direction),
-// translucency_table.csv (every node of every water content's τ; grains/data/translucency.csv
+// translucency_table.csv (every node of every water content's τ; shading/data/translucency.csv
 // is this file, shipped), translucency_table.png (τ against d), translucency_error.png (the
 // two models against the reference at one water content) and run_info.txt.
 #pragma once

@@ -69,6 +69,15 @@ execute_process(COMMAND ffprobe -v error -show_entries stream=width,height -of c
 if(NOT sheet STREQUAL "140,18")
   message(FATAL_ERROR "contact_sheet.png is '${sheet}' pixels, not 4 tiles of 32 x 18: 140,18")
 endif()
+# The frame-cost study on the short run: a window of a 64 x 36 frame.
+run(study frame-cost --run "${OUT}/run" --width 64 --height 36 --window 16 8 --reference-spp 16 --paper-spp 8
+    --sobol-spp 1 2 4 --cost-spp 1 --out "${OUT}/frame-cost")
+expect_files("${OUT}/frame-cost" frame_cost.csv run_info.txt window_reference_16/render.exr)
+file(STRINGS "${OUT}/frame-cost/frame_cost.csv" rows)
+list(LENGTH rows count)
+if(NOT count EQUAL 9)  # header, the paper's sampling, three Sobol counts, four models
+  message(FATAL_ERROR "frame_cost.csv has ${count} lines, not 9")
+endif()
 run(figure 13 --width 120 --height 40 --spp 2 --path-spp 2 --out "${OUT}/figure13")
 expect_files("${OUT}/figure13" figure13_cdrf.png figure13_translucent.exr figure13_path.exr figure13.csv run_info.txt)
 file(STRINGS "${OUT}/figure13/run_info.txt" delta_e REGEX "^(cdrf|translucent|path)_delta_e_driest_wettest_(lit|shaded): [0-9.e+-]+$")
