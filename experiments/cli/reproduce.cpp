@@ -163,8 +163,8 @@ std::vector<ReproduceStep> reproduce_steps(const std::filesystem::path& out, boo
   // own mesh, 500 of the chawan's 800 grains made a frame 5 s, not 1 s.
   for (const std::string scene : {"shari", "chawan", "onigiri", "bunny"})
     steps.push_back({"Video: the " + scene + " run, every frame at 480 x 270, 8 spp (render.mp4)",
-                     {"render", "--run", (out / "table1" / scene).string(), "--every-frame", "--video", "--width", "480",
-                      "--height", "270", "--spp", "8", "--soft-instance-tolerance", "2e-4"},
+                     {"render", "--run", (out / "table1" / scene).string(), "--every-frame", "--video", "--width",
+                      "480", "--height", "270", "--spp", "8", "--soft-instance-tolerance", "2e-4"},
                      "video-" + scene, "table1", {}});
   std::vector<ReproduceStep> result;
   for (ReproduceStep step : steps) {
@@ -229,7 +229,8 @@ void reproduce_command(const ReproduceSettings& settings, const std::filesystem:
       index += text.str() + "\n";
     }
     for (const auto& image : files_of(step.folder, out, ".png")) index += "![" + image.string() + "](" + image.string() + ")\n";
-    for (const auto& video : files_of(step.folder, out, ".mp4")) index += "\nVideo: [" + video.string() + "](" + video.string() + ")\n";
+    for (const auto& video : files_of(step.folder, out, ".mp4"))
+      index += "\nVideo: [" + video.string() + "](" + video.string() + ")\n";
     const auto tables = files_of(step.folder, out, ".csv");
     if (!tables.empty()) {
       index += "\nData:";

@@ -35,7 +35,8 @@ shading::PixelWindow centre_window(const FrameCostStudySettings& s) {
   return {x0, y0, x0 + s.window_width, y0 + s.window_height};
 }
 
-WindowResult render_window(const FrameCostStudySettings& s, const WindowRender& r, const std::filesystem::path& folder) {
+WindowResult render_window(const FrameCostStudySettings& s, const WindowRender& r,
+                           const std::filesystem::path& folder) {
   RenderCommandSettings c;
   c.run = s.run;
   c.frame = s.frame;
@@ -79,12 +80,14 @@ double equal_error_spp(const std::vector<int>& spp, const std::vector<double>& e
 }
 
 void validate(const FrameCostStudySettings& s) {
-  if (!std::filesystem::is_directory(s.run)) throw std::invalid_argument("--run: '" + s.run.string() + "' is not a run's folder");
+  if (!std::filesystem::is_directory(s.run))
+    throw std::invalid_argument("--run: '" + s.run.string() + "' is not a run's folder");
   if (s.width < 1 || s.height < 1 || s.window_width < 1 || s.window_height < 1 || s.window_width > s.width ||
       s.window_height > s.height)
     throw std::invalid_argument("--window must be positive and fit in --width x --height");
   bool counts = s.reference_spp >= 1 && s.paper_spp >= 1 && s.cost_spp >= 1 && !s.sobol_spp.empty();
-  for (size_t k = 0; k < s.sobol_spp.size(); ++k) counts = counts && s.sobol_spp[k] >= 1 && (k == 0 || s.sobol_spp[k] > s.sobol_spp[k - 1]);
+  for (size_t k = 0; k < s.sobol_spp.size(); ++k)
+    counts = counts && s.sobol_spp[k] >= 1 && (k == 0 || s.sobol_spp[k] > s.sobol_spp[k - 1]);
   if (!counts) throw std::invalid_argument("sample counts must be >= 1, and --sobol-spp ascending");
   if (s.bounces < 0 || s.integrator == RenderIntegrator::kPath)
     throw std::invalid_argument("the model under study is the CDRF or the translucent model, with bounces >= 0");
@@ -116,7 +119,8 @@ void frame_cost_study_command(const FrameCostStudySettings& s, const std::filesy
   std::vector<double> sobol_error;
   double sobol_seconds_per_spp = 0.0;
   for (const int spp : s.sobol_spp) {
-    const auto [error, seconds_per_spp] = measure({"sobol", s.integrator, s.bounces, shading::SamplerKind::kSobol, spp});
+    const auto [error, seconds_per_spp] =
+        measure({"sobol", s.integrator, s.bounces, shading::SamplerKind::kSobol, spp});
     sobol_error.push_back(error);
     sobol_seconds_per_spp = seconds_per_spp;  // the largest count's: the least overhead per sample
   }
@@ -140,6 +144,7 @@ void frame_cost_study_command(const FrameCostStudySettings& s, const std::filesy
                                   {"window", cell(s.window_width) + " x " + cell(s.window_height) + " at the centre"},
                                   {"model", integrator_name(s.integrator) + " +" + cell(s.bounces) + " bounces"},
                                   {"reference_spp", cell(s.reference_spp)},
+                                  {"reference_seconds", cell(reference.seconds)},
                                   {"paper_spp", cell(s.paper_spp)},
                                   {"paper_relative_rmse", cell(paper_error)},
                                   {"equal_error_sobol_spp", cell(equal)},

@@ -65,7 +65,8 @@ std::vector<std::string> joined(std::vector<std::string> a, const std::vector<st
 std::vector<std::string> required_arguments(const std::vector<std::string>& path) {
   if (path == std::vector<std::string>{"render"}) return {"--meshes", RICE_TEST_MESH};
   if (path == std::vector<std::string>{"merge-crops"}) return {RICE_TEST_SCRATCH};
-  if (path == std::vector<std::string>{"study", "soft-curvature"} || path == std::vector<std::string>{"study", "soft-instances"})
+  if (path == std::vector<std::string>{"study", "soft-curvature"} || path == std::vector<std::string>{"study", "soft-instances"} ||
+      path == std::vector<std::string>{"study", "frame-cost"})
     return {"--run", RICE_TEST_SCRATCH};
   return {};
 }
