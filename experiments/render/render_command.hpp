@@ -9,9 +9,9 @@
 // automatically.
 // Writes render.png (tone mapped), render.exr (linear, with the AOV layers of
 // shading/aovs.hpp) — frame_NNNN.png and .exr for every frame of a run, and render.mp4 and
-// contact_sheet.png of them with `video` — and run_info.txt (settings, the camera, ray counts, rays per second,
-// wall time). With a crop window, the images are that part of the frame; its EXR's data
-// window places it in the frame for merge_crops (crop_merge.hpp).
+// contact_sheet.png of them with `video` — and run_info.txt (settings, the camera, ray
+// counts, rays per second, wall time). With a crop window, the images are that part of the
+// frame; its EXR's data window places it in the frame for merge_crops (crop_merge.hpp).
 #pragma once
 
 #include <filesystem>
