@@ -88,18 +88,17 @@ std::vector<std::filesystem::path> files_of(const std::filesystem::path& folder,
   return found;
 }
 
-}  // namespace
+// Each step: its title, its command (--out added by reproduce_steps), its folder, the step it
+// reads and the files it reads.
 
-std::vector<ReproduceStep> reproduce_steps(const std::filesystem::path& out, bool full,
-                                           const std::filesystem::path& scenes) {
+/// The solvers' studies, the grains' figures and the heaps.
+std::vector<ReproduceStep> solver_and_grain_steps(const std::filesystem::path& scenes) {
   // 400 grains poured slowly from high up onto a plate, with and without cohesion.
   const std::vector<std::string> heap{"run", (scenes / "heap.toml").string(), "--set", "grains.count=400", "--set",
                                       "solver.frames=180", "--set", "emitter.seconds=3.5", "--set", "emitter.height_m=0.05"};
   std::vector<std::string> heap_dry = heap;
   heap_dry.insert(heap_dry.end(), {"--set", "effects.cohesion=false"});
-  // Each step: its title, its command (--out added below), its folder, the step it reads and
-  // the files it reads.
-  std::vector<ReproduceStep> steps{
+  return {
       {"XPBD stiffness: compliance against the analytic stiffness", {"study", "xpbd-stiffness"}, "xpbd-stiffness", "",
        {}},
       {"Damped oscillator: XPBD and the reference against the analytic decay", {"study", "oscillator"}, "oscillator",
@@ -122,6 +121,13 @@ std::vector<ReproduceStep> reproduce_steps(const std::filesystem::path& out, boo
        "scene-convergence",
        "",
        {scenes / "shari.toml"}},
+  };
+}
+
+/// The shading fits, the paper's scenes (figure 10, table 1) and the pressed clump.
+std::vector<ReproduceStep> shading_fit_and_scene_steps(const std::filesystem::path& out, bool full,
+                                                       const std::filesystem::path& scenes) {
+  return {
       {"CDRF: the fit against the random-walk reference", {"study", "cdrf"}, "cdrf", "", {}},
       {"The translucent model: light through the grain fitted per water content (shading/data/translucency.csv)",
        {"study", "translucency"}, "translucency", "", {}},
@@ -146,6 +152,13 @@ std::vector<ReproduceStep> reproduce_steps(const std::filesystem::path& out, boo
        "soft-curvature",
        "press",
        {}},
+  };
+}
+
+/// Figure 13, the rendering studies and the renders of table 1's runs: the chawan's last
+/// frame, its 4K cost and every paper scene's video.
+std::vector<ReproduceStep> rendering_steps(const std::filesystem::path& out) {
+  std::vector<ReproduceStep> steps{
       {"Fig. 13: grains soaked for five times: the CDRF, the translucent model, the path tracer", {"figure", "13"},
        "figure13", "", {}},
       {"Rendering: error against time for the samplers and every model against the path tracer", {"study", "render"},
@@ -166,14 +179,22 @@ std::vector<ReproduceStep> reproduce_steps(const std::filesystem::path& out, boo
                      {"render", "--run", (out / "table1" / scene).string(), "--every-frame", "--video", "--width",
                       "480", "--height", "270", "--spp", "8", "--soft-instance-tolerance", "2e-4"},
                      "video-" + scene, "table1", {}});
-  std::vector<ReproduceStep> result;
-  for (ReproduceStep step : steps) {
+  return steps;
+}
+
+}  // namespace
+
+std::vector<ReproduceStep> reproduce_steps(const std::filesystem::path& out, bool full,
+                                           const std::filesystem::path& scenes) {
+  std::vector<ReproduceStep> steps = solver_and_grain_steps(scenes);
+  for (const auto& part : {shading_fit_and_scene_steps(out, full, scenes), rendering_steps(out)})
+    steps.insert(steps.end(), part.begin(), part.end());
+  for (ReproduceStep& step : steps) {
     step.folder = out / step.folder;
     step.arguments.push_back("--out");
     step.arguments.push_back(step.folder.string());
-    result.push_back(std::move(step));
   }
-  return result;
+  return steps;
 }
 
 void validate(const ReproduceSettings& settings) {
