@@ -180,7 +180,7 @@ int add_soft_grains(shading::RenderScene& scene, const NumericCsv& grains_csv, c
                                                         simulation.V, grain.x, simulation.T)};
     if (soft.curvature == SoftCurvature::kDeformed)
       drawn.curvature = shading::smoothed_vertex_values(mesh.V, mesh.F, shading::vertex_mean_curvature(mesh.V, mesh.F),
-                                                        std::min(variants.shading_radius, kCurvatureRadius));
+                                                        curvature_radius(variants.shading_radius));
     scene.add_instance(add_grain_prototype(scene, mesh.V, mesh.F, drawn, shading::RenderScene::Reuse::kSingle),
                        Eigen::Affine3d::Identity(), 0, grain.grain);
     boxes.push_back(placed_box(mesh.V, Eigen::Affine3d::Identity()));

@@ -31,8 +31,8 @@ shading::Medium grain_medium(double absorption_percent) {
 }
 
 GrainShading grain_shading(const shading::MeshVertices& V, const shading::MeshTriangles& F, double shading_radius) {
-  const double curvature_radius = std::min(shading_radius, kCurvatureRadius);
-  return {.curvature = shading::smoothed_vertex_values(V, F, shading::vertex_mean_curvature(V, F), curvature_radius),
+  return {.curvature = shading::smoothed_vertex_values(V, F, shading::vertex_mean_curvature(V, F),
+                                                       curvature_radius(shading_radius)),
           .thickness = shading::vertex_thickness(V, F),
           .normals = shading::smoothed_vertex_normals(V, F, shading_radius)};
 }

@@ -4,6 +4,8 @@
 // direction.
 #pragma once
 
+#include <algorithm>
+
 #include <Eigen/Geometry>
 
 #include "shading/material.hpp"
@@ -28,6 +30,9 @@ shading::Medium grain_medium(double absorption_percent);
 /// gain from the wider normals; the CDRF loses when its curvature is averaged wider than 0.4 mm.
 inline constexpr double kShadingRadius = 1.2e-3;
 inline constexpr double kCurvatureRadius = 0.4e-3;
+
+/// [m] The curvature's smoothing radius for shading normals smoothed over `shading_radius`.
+inline double curvature_radius(double shading_radius) { return std::min(shading_radius, kCurvatureRadius); }
 
 /// What a grain mesh is shaded with, per vertex: the normals smoothed over `shading_radius`,
 /// the jet-fitted mean curvature over the smaller of it and kCurvatureRadius (0: the mesh's
