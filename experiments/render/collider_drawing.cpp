@@ -106,6 +106,24 @@ grains::SurfaceMesh cutaway_walls(const grains::SurfaceMesh& room, const Eigen::
   return walls;
 }
 
+Eigen::Affine3d collider_placement(const ColliderDrawing& collider, double time) {
+  const xpbd::ColliderKeyframe pose = xpbd::collider_pose(collider.motion, time);
+  return Eigen::Translation3d(pose.translation) * pose.rotation * Eigen::Scaling(pose.scale);
+}
+
+Eigen::AlignedBox3d drawn_colliders_box(const std::vector<ColliderDrawing>& colliders,
+                                        const std::vector<double>& times) {
+  Eigen::AlignedBox3d box;
+  for (const ColliderDrawing& c : colliders) {
+    for (const double time : times) {
+      if (!xpbd::collider_present(c.motion, time)) continue;
+      const Eigen::Affine3d place = collider_placement(c, time);
+      for (Eigen::Index v = 0; v < c.mesh.V.rows(); ++v) box.extend(place * c.mesh.V.row(v).transpose());
+    }
+  }
+  return box;
+}
+
 void write_collider_drawings(const std::vector<ColliderDrawing>& drawings, const std::filesystem::path& run) {
   if (drawings.empty()) return;
   make_output_folder(run / "colliders");

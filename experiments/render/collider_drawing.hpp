@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "grains/mesh_types.hpp"
 #include "xpbd/collider.hpp"
 
@@ -37,6 +39,16 @@ struct ColliderDrawing {
 /// A hollow collider's walls as seen from `eye` (in the collider's frame): the triangles whose
 /// outward normal faces away from the eye, turned to face into the room.
 grains::SurfaceMesh cutaway_walls(const grains::SurfaceMesh& room, const Eigen::Vector3d& eye);
+
+/// Where the collider's frame is at `time` [s]: translation · rotation · scale, as the solver
+/// posed it (xpbd::collider_pose).
+Eigen::Affine3d collider_placement(const ColliderDrawing& collider, double time);
+
+/// The union of the colliders' boxes, each as posed at every one of `times` [s] when it is
+/// present. What a video's camera frames beside the grains: framed on its last frame's grains
+/// alone, the bunny's video cut off the mould's top. Empty for none.
+Eigen::AlignedBox3d drawn_colliders_box(const std::vector<ColliderDrawing>& colliders,
+                                        const std::vector<double>& times);
 
 /// An analytic collider's surface in its own frame; throws std::invalid_argument for a
 /// distance-grid collider (a mesh collider draws its own mesh).

@@ -111,6 +111,13 @@ struct RenderTotals {
   int own_meshes = 0;  ///< soft grains drawn as their own deformed mesh (the last image's)
 };
 
+/// The times [s] of the frames rendered.
+std::vector<double> frame_times(const RenderInputs& in) {
+  std::vector<double> times;
+  for (const auto& frame : in.frames) times.push_back(frame_number(frame) / in.fps);
+  return times;
+}
+
 /// The image of `scene` by the settings' integrator; its rays into `stats` (the path
 /// tracer's paths as camera rays, its other rays as shadow rays).
 shading::Image integrate(const RenderCommandSettings& s, const RenderInputs& in, const shading::RenderScene& scene,
@@ -153,7 +160,8 @@ void render_image(const RenderCommandSettings& s, const RenderInputs& in, int k,
     add_mesh_files(scene, s, in.files, grain_boxes);
   }
   const Eigen::AlignedBox3d box = add_bowl(scene, s, framing_box(grain_boxes));
-  if (!stage) stage = stage_for(s, box);
+  if (!stage)  // a video frames what any of its frames shows
+    stage = stage_for(s, s.every_frame ? box.merged(drawn_colliders_box(in.colliders, frame_times(in))) : box);
   add_set(scene, s, *stage);
   if (!s.run.empty()) add_colliders(scene, in.colliders, frame_number(in.frames[k]) / in.fps, stage->camera.position);
   scene.commit();

@@ -73,8 +73,7 @@ void add_colliders(shading::RenderScene& scene, const std::vector<ColliderDrawin
                    const Eigen::Vector3d& eye) {
   for (const ColliderDrawing& c : colliders) {
     if (!xpbd::collider_present(c.motion, time)) continue;
-    const xpbd::ColliderKeyframe pose = xpbd::collider_pose(c.motion, time);
-    const Eigen::Affine3d place = Eigen::Translation3d(pose.translation) * pose.rotation * Eigen::Scaling(pose.scale);
+    const Eigen::Affine3d place = collider_placement(c, time);
     const grains::SurfaceMesh mesh = c.hollow ? cutaway_walls(c.mesh, place.inverse() * eye) : c.mesh;
     if (mesh.F.rows() == 0) continue;
     scene.add_instance(scene.add_prototype(mesh.V, mesh.F), place, collider_material(c.material));

@@ -173,9 +173,9 @@ SceneResult run_scene_command(const std::filesystem::path& scene_file, const std
   if (scene.render) {
     const auto start = std::chrono::steady_clock::now();
     RenderCommandSettings settings = scene_render_settings(*scene.render, scene, folder);
-    settings.camera = render_command(settings, folder / "render").camera;
+    render_command(settings, folder / "render");
     result.render_seconds = seconds_since(start);
-    if (scene.render->every_frame || scene.render->video) {
+    if (scene.render->every_frame || scene.render->video) {  // framed on what any frame shows
       settings.every_frame = true;
       settings.video = scene.render->video;
       render_command(settings, folder / "render_frames");

@@ -112,5 +112,18 @@ radius_m = 0.01
   EXPECT_TRUE(read_collider_drawings(run).empty());  // a run without colliders
 }
 
+TEST(ColliderDrawing, TheBoxDrawnHoldsEveryPoseWhileThePieceIsPresent) {
+  ColliderDrawing lid{collider_surface(shaped(xpbd::ColliderShape::kSphere, 0.01)), "wood", {}};
+  lid.motion.motion = {{0.0, xpbd::Vec3(0.0, 0.0, 0.1)}, {1.0, xpbd::Vec3(0.0, 0.0, 0.0)}};
+  lid.motion.removal_time = 2.0;
+  const Eigen::AlignedBox3d late = drawn_colliders_box({lid}, {1.0, 1.5});
+  EXPECT_NEAR(late.max().z(), 0.01, 1e-12);
+  EXPECT_NEAR(late.min().z(), -0.01, 1e-12);
+  const Eigen::AlignedBox3d all = drawn_colliders_box({lid}, {0.0, 0.5, 1.0});
+  EXPECT_NEAR(all.max().z(), 0.11, 1e-12);  // its first pose, 10 cm up
+  EXPECT_NEAR(all.max().x(), 0.01, 5e-4);
+  EXPECT_TRUE(drawn_colliders_box({lid}, {2.0, 3.0}).isEmpty());  // removed
+}
+
 }  // namespace
 }  // namespace rice::experiments
