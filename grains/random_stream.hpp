@@ -8,6 +8,9 @@
 #include <cstdint>
 #include <numbers>
 #include <random>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 
 namespace rice::grains {
 
@@ -28,6 +31,20 @@ class RandomStream {
   /// A seed for an independent child stream (one per grain, so grains can be built in
   /// parallel and in any order).
   std::uint64_t child_seed() { return engine_(); }
+
+  /// The engine's state in the standard's text form, for checkpoints; set_state reads it back
+  /// and throws std::runtime_error for text that is not one.
+  std::string state() const {
+    std::ostringstream out;
+    out << engine_;
+    return out.str();
+  }
+  void set_state(const std::string& text) {
+    std::istringstream in(text);
+    std::mt19937_64 engine;
+    if (!(in >> engine)) throw std::runtime_error("not a random stream's state");
+    engine_ = engine;
+  }
 
  private:
   std::mt19937_64 engine_;

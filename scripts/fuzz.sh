@@ -13,7 +13,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 seconds=${1:-30}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(obj off ply medit absorption scene)
+[ ${#targets[@]} -gt 0 ] || targets=(obj off ply medit absorption scene checkpoint)
 
 if [ ! -f build-sanitize/build.ninja ]; then
   echo "fuzz: no sanitizer build; run ./scripts/sanitize.sh first" >&2

@@ -1,6 +1,8 @@
 // Forming, projecting and breaking cohesive bonds; see cohesion_bonds.hpp.
 #include "xpbd/cohesion_bonds.hpp"
 
+#include "xpbd/state_archive.hpp"
+
 #include <algorithm>
 
 namespace rice::xpbd {
@@ -122,5 +124,13 @@ void CohesionBonds::end_substep(double h) {
   bonds_ = std::move(kept);
   for (auto& [pair, touched] : broken_pairs_) touched += h;
 }
+
+template <class Self, class Archive>
+void CohesionBonds::transfer_state(Self& self, Archive& archive) {
+  archive(self.bonds_, self.broken_pairs_, self.sorted_, self.broken_);
+}
+
+void CohesionBonds::save_state(StateWriter& out) const { transfer_state(*this, out); }
+void CohesionBonds::load_state(StateReader& in) { transfer_state(*this, in); }
 
 }  // namespace rice::xpbd

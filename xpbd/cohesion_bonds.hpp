@@ -24,6 +24,9 @@
 
 namespace rice::xpbd {
 
+class StateWriter;
+class StateReader;
+
 class CohesionBonds {
  public:
   /// Two spheres within the bond distance at the start of a substep: sphere sa of body a and
@@ -50,6 +53,9 @@ class CohesionBonds {
   void end_substep(double h);
   int count() const { return static_cast<int>(bonds_.size()); }
   int broken() const { return broken_; }  ///< body pairs whose bonds broke
+  /// Its state between steps, for checkpoints (state_archive.hpp).
+  void save_state(StateWriter& out) const;
+  void load_state(StateReader& in);
 
  private:
   struct Bond {
@@ -61,6 +67,8 @@ class CohesionBonds {
     int held = -1;            ///< its index among the particle terms' bonds, when held there
   };
   void sort_bonds();
+  template <class Self, class Archive>
+  static void transfer_state(Self& self, Archive& archive);
   /// Sorted by key at each substep's end (a substep's new bonds are appended), so a pair's
   /// bonds are contiguous.
   std::vector<Bond> bonds_;

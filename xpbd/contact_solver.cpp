@@ -10,6 +10,7 @@
 
 #include "xpbd/broad_phase.hpp"
 #include "xpbd/sleeping.hpp"
+#include "xpbd/state_archive.hpp"
 
 namespace rice::xpbd {
 
@@ -630,5 +631,28 @@ void ContactSolver::update_bonds() {
   statistics_.bonds = bonds_->count();
   statistics_.bonds_broken = bonds_->broken();
 }
+
+/// What carries over between steps: the contacts' states (anchors, sliding, the forces held
+/// in particle steps), the broad phase's pairs and its sphere centres and time, the radii and
+/// their time, the centres of sleeping bodies, the collider impulses of the interval, the
+/// statistics (the deepest penetration so far) and the bonds. The rest is rebuilt each substep.
+template <class Self, class Archive>
+void ContactSolver::transfer_state(Self& self, Archive& archive) {
+  auto& s = self.statistics_;
+  archive(self.body_pairs_, self.collider_impulses_, self.interval_time_, self.sphere_pairs_, self.states_,
+          self.centre_now_, self.centre_start_, self.centre_at_broad_phase_, self.broad_phase_time_, self.radius_,
+          self.radii_time_, self.centres_at_rest_, self.active_bodies_, s.candidates, s.contacts, s.max_penetration,
+          s.bonds, s.bonds_broken, s.collider_forces);
+  bool bonds = self.bonds_.has_value();
+  archive(bonds);
+  if (bonds != self.bonds_.has_value()) throw std::runtime_error("the state's cohesion does not match the model's");
+  if (self.bonds_) {
+    if constexpr (std::is_const_v<Self>) self.bonds_->save_state(archive);
+    else self.bonds_->load_state(archive);
+  }
+}
+
+void ContactSolver::save_state(StateWriter& out) const { transfer_state(*this, out); }
+void ContactSolver::load_state(StateReader& in) { transfer_state(*this, in); }
 
 }  // namespace rice::xpbd

@@ -92,6 +92,10 @@ class ContactSolver {
   /// end, in end_substep.)
   void update_particle_contacts();
 
+  /// Its state between steps, for checkpoints (state_archive.hpp).
+  void save_state(StateWriter& out) const;
+  void load_state(StateReader& in);
+
  private:
   /// What a sphere pair's contact carries from substep to substep, while its body pair stays
   /// in the broad phase: sphere s_a of body a against sphere s_b of body b, or against the
@@ -184,6 +188,8 @@ class ContactSolver {
   }
   void project_friction(Contact& contact, const Positions& x_previous);
   void update_bonds();
+  template <class Self, class Archive>
+  static void transfer_state(Self& self, Archive& archive);
 
   Model& model_;
   bool parallel_;

@@ -14,6 +14,7 @@
 #include "xpbd/distance_constraint.hpp"
 #include "xpbd/energy.hpp"
 #include "xpbd/sleeping.hpp"
+#include "xpbd/state_archive.hpp"
 #include "xpbd/tet_constraint_pair.hpp"
 #include "xpbd/tet_volume_constraint.hpp"
 #include "xpbd/vertex_block_descent.hpp"
@@ -568,5 +569,31 @@ StepDiagnostics Solver::measure(double h) const {
   d.max_speed = max_speed(model_.particles);
   return d;
 }
+
+/// The model's particles and rigid bodies and its bodies' sleep, then the solver's own: the
+/// corotated tets' rotations and vertex block descent's last velocities (both warm starts),
+/// the sleep marks, the step count and timings, and the contact solver's. The multipliers and
+/// the substep's positions start afresh each substep and are not kept.
+template <class Self, class Archive>
+void Solver::transfer_state(Self& self, Archive& archive) {
+  auto& model = self.model_;
+  const long particles = model.particles.size(), rigid = static_cast<long>(model.rigid_bodies.size());
+  archive(model.particles.x, model.particles.v, model.rigid_bodies);
+  if (model.particles.size() != particles || static_cast<long>(model.rigid_bodies.size()) != rigid)
+    throw std::runtime_error("the state's particles or rigid bodies do not match the model's");
+  for (auto& body : model.bodies) archive(body.asleep, body.quiet_steps, body.moving);
+  archive(self.rotation_, self.v_previous_, self.asleep_particle_, self.asleep_rigid_, self.all_asleep_, self.step_,
+          self.timings_);
+  bool contacts = self.contacts_ != nullptr;
+  archive(contacts);
+  if (contacts != (self.contacts_ != nullptr)) throw std::runtime_error("the state's contacts do not match the model's");
+  if (self.contacts_) {
+    if constexpr (std::is_const_v<Self>) self.contacts_->save_state(archive);
+    else self.contacts_->load_state(archive);
+  }
+}
+
+void Solver::save_state(StateWriter& out) const { transfer_state(*this, out); }
+void Solver::load_state(StateReader& in) { transfer_state(*this, in); }
 
 }  // namespace rice::xpbd

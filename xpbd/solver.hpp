@@ -96,6 +96,8 @@ class SimulationError : public std::runtime_error {
 
 class ContactSolver;
 class VertexBlockDescent;
+class StateWriter;
+class StateReader;
 
 /// Wall time spent in each part of step() since the solver was built [s]; the rest of
 /// `total` is prediction, constraint and contact solves, and velocity updates.
@@ -127,6 +129,12 @@ class Solver {
   /// Figures of the last step; computed only when settings().diagnostics is on.
   const StepDiagnostics& diagnostics() const { return diagnostics_; }
 
+  /// The model's state (positions, velocities, rigid poses, sleep) and the solver's between
+  /// steps (the step count, warm starts, the contacts'), for checkpoints (state_archive.hpp).
+  /// load_state throws std::runtime_error when the bytes do not fit this model.
+  void save_state(StateWriter& out) const;
+  void load_state(StateReader& in);
+
  private:
   /// `end_of_interval`: the last substep before the next broad phase.
   void substep(double h, bool end_of_interval);
@@ -156,6 +164,8 @@ class Solver {
   /// contiguous range (a tet of free particles, two bodies' tets interleaved).
   static std::vector<TetBlock> body_tet_blocks(const Model& model);
   [[noreturn]] void fail(const char* constraint_type, int index) const;
+  template <class Self, class Archive>
+  static void transfer_state(Self& self, Archive& archive);
   StepDiagnostics measure(double h) const;
 
   Model& model_;

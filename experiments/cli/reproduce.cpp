@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "experiments/io/atomic_file.hpp"
+#include "experiments/io/content_digest.hpp"
 #include "experiments/io/csv_table.hpp"
 #include "experiments/io/progress.hpp"
 
@@ -23,7 +24,7 @@ std::string command_text(const std::vector<std::string>& arguments) {
 }
 
 /// A digest of the files at `input` (a file, or a folder's files in path order) and their
-/// paths: FNV-1a, 64 bits, written here as the standard library has no stable content hash.
+/// paths (content_digest.hpp).
 std::string digest_of(const std::filesystem::path& input) {
   std::vector<std::filesystem::path> files;
   std::error_code error;
@@ -35,10 +36,8 @@ std::string digest_of(const std::filesystem::path& input) {
   } else {
     files.push_back(input);
   }
-  std::uint64_t hash = 14695981039346656037ull;
-  const auto mix = [&](const std::string& bytes) {
-    for (const unsigned char c : bytes) hash = (hash ^ c) * 1099511628211ull;
-  };
+  std::uint64_t hash = kDigestBasis;
+  const auto mix = [&](const std::string& bytes) { hash = content_digest(bytes, hash); };
   for (const auto& file : files) {
     std::ifstream in(file, std::ios::binary);
     std::stringstream bytes;

@@ -19,8 +19,10 @@ class SceneCommands : public CommandFamily {
     run->add_option("scene", scene_, "the scene's TOML file")->required();
     run->add_option("--out", out_, "output folder")->capture_default_str();
     run->add_option("--set", overrides_, "section.key=value: overrides a key of the file (repeatable)");
+    run->add_flag("--resume", resume_,
+                  "continue from the last checkpoint in --out (the same scene file and --set overrides)");
     add(run, [this] { experiments::validate(read_scene_file(scene_, overrides_)); },
-        [this] { run_scene_command(scene_, overrides_, out_); });
+        [this] { run_scene_command(scene_, overrides_, out_, resume_); });
     CLI::App* keys = app.add_subcommand("scene-keys", "every key a scene file may hold, as Markdown (docs/scene-keys.md)");
     add(keys, nullptr, [] { std::cout << scene_keys_markdown(); });
   }
@@ -28,6 +30,7 @@ class SceneCommands : public CommandFamily {
  private:
   std::string scene_, out_ = "out/scene";
   std::vector<std::string> overrides_;
+  bool resume_ = false;
 };
 
 }  // namespace

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rice::experiments {
@@ -13,6 +14,9 @@ class CsvTable {
   explicit CsvTable(std::vector<std::string> header);
   void add_row(const std::vector<std::string>& cells);
   std::string text() const;
+  /// The rows so far, and replacing them (a run resumed from a checkpoint).
+  const std::vector<std::vector<std::string>>& rows() const { return rows_; }
+  void set_rows(std::vector<std::vector<std::string>> rows) { rows_ = std::move(rows); }
 
  private:
   std::vector<std::string> header_;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "experiments/scene/world.hpp"
+#include "xpbd/state_archive.hpp"
 
 namespace rice::experiments {
 
@@ -30,6 +31,10 @@ class Emitter {
 
   /// After the run: what it did, for run_info.txt.
   virtual void report(const World& world, RunInfoEntries& info) const = 0;
+
+  /// What it carries between frames beyond world.released, for checkpoints; none by default.
+  virtual void save_state(xpbd::StateWriter&) const {}
+  virtual void load_state(xpbd::StateReader&) {}
 };
 
 }  // namespace rice::experiments

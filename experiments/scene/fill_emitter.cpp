@@ -68,4 +68,12 @@ void FillEmitter::report(const World& world, RunInfoEntries& info) const {
   info.push_back({"grains_placed", cell(world.released)});
 }
 
+void FillEmitter::save_state(xpbd::StateWriter& out) const { out(random_.state(), next_round_, rounds_); }
+
+void FillEmitter::load_state(xpbd::StateReader& in) {
+  std::string random;
+  in(random, next_round_, rounds_);
+  random_.set_state(random);
+}
+
 }  // namespace rice::experiments

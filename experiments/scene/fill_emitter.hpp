@@ -28,6 +28,9 @@ class FillEmitter : public Emitter {
   void emit(World& world, double time) override;
   /// Also says on the terminal how many grains found no room.
   void report(const World& world, RunInfoEntries& info) const override;
+  /// The random stream, the next round's time and the rounds so far.
+  void save_state(xpbd::StateWriter& out) const override;
+  void load_state(xpbd::StateReader& in) override;
 
  private:
   const xpbd::Collider& mould(const World& world) const;

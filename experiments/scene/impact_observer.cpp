@@ -58,4 +58,7 @@ void ImpactObserver::end(const World& world, const Stepper&, SceneReport& report
   report.info.push_back({"peak_principal_strain_frame", body_of_tet_.empty() ? "n/a" : cell(peak_frame_)});
 }
 
+void ImpactObserver::save_state(xpbd::StateWriter& out) const { out(lowest_, rebound_, peak_strain_, peak_frame_); }
+void ImpactObserver::load_state(xpbd::StateReader& in) { in(lowest_, rebound_, peak_strain_, peak_frame_); }
+
 }  // namespace rice::experiments

@@ -24,6 +24,9 @@ class ImpactObserver : public Observer {
   void begin(const World& world) override;
   void observe(const World& world, const Stepper& stepper, int frame, double wall_seconds) override;
   void end(const World& world, const Stepper& stepper, SceneReport& report) override;
+  /// The lowest and rebound heights and the peak strain so far.
+  void save_state(xpbd::StateWriter& out) const override;
+  void load_state(xpbd::StateReader& in) override;
 
  private:
   /// The mean largest principal strain of the released soft grains' tets now.

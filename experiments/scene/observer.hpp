@@ -29,6 +29,10 @@ class Observer {
   virtual void observe(const World&, const Stepper&, int /*frame*/, double /*wall_seconds*/) {}
   /// After the last frame.
   virtual void end(const World&, const Stepper&, SceneReport&) {}
+  /// What it gathered over the frames so far, for checkpoints; none by default (an observer
+  /// that writes each frame's files as it goes keeps nothing).
+  virtual void save_state(xpbd::StateWriter&) const {}
+  virtual void load_state(xpbd::StateReader&) {}
 };
 
 /// "frame_0001" for frame 1: the stem of a frame's files.

@@ -37,6 +37,7 @@ void validate_grains_and_solver(const Scene& s) {
   check(scene_key("solver", "substeps"), s.solver.substeps);
   check(scene_key("solver", "iterations"), s.solver.iterations);
   check(scene_key("solver", "radius_interval_s"), s.solver.radius_interval);
+  check(scene_key("solver", "checkpoint_every"), s.solver.checkpoint_every);
   require(!s.solver.vertex_block_descent || s.grains.body == xpbd::BodyKind::kSoft,
           "[solver] method = 'vbd' needs soft grains");
 }

@@ -76,6 +76,9 @@ struct SceneSolver {
   /// Neo-Hookean constraints, which vertex block descent minimises with a line search and
   /// which gains energy at τ ≫ h. XPBD always takes the paper's.
   bool vbd_strain_rate_damping = true;
+  /// A checkpoint (checkpoint.hpp) every this many frames; 0: after the first frame that ends
+  /// 30 s of wall time after the last one, and on Ctrl-C or SIGTERM either way.
+  int checkpoint_every = 0;
 };
 
 /// [container]: what holds the grains.

@@ -92,6 +92,7 @@ void read_solver(TomlSection section, SceneSolver& s, xpbd::BodyKind body) {
   s.substeps = static_cast<int>(section.integer("substeps"));
   s.iterations = static_cast<int>(section.integer("iterations"));
   s.radius_interval = section.number("radius_interval_s");
+  s.checkpoint_every = static_cast<int>(section.integer("checkpoint_every"));
   s.vertex_block_descent = section.choice("method") == "vbd";
   s.vbd_strain_rate_damping = section.choice("vbd_damping") == "strain-rate";
   section.require(s.vertex_block_descent || !section.has("vbd_damping"), "vbd_damping",

@@ -98,6 +98,9 @@ std::vector<SceneKey> solver_container_emitter_keys() {
       number("solver", "radius_interval_s", closed(0, 0.1), xpbd::ContactSettings{}.radius_interval,
              "soft grains: the longest time their collision spheres' radii (from each tet's smallest stretch) hold "
              "between updates [s]; 0: every substep"),
+      integer("solver", "checkpoint_every", closed(0, 100000), 0.0,
+              "a checkpoint every this many frames, for rice run --resume (also on Ctrl-C and SIGTERM)",
+              "every 30 s of wall time"),
       choice("solver", "vbd_damping", {"strain-rate", "constraint"}, std::string("strain-rate"),
              "vbd: the soak's damping time (eq. 4) as the convex strain-rate damping, or as the paper's Rayleigh "
              "damping of the constraints (XPBD always takes the paper's)"),

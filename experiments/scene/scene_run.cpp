@@ -7,10 +7,12 @@
 #include <string>
 
 #include "experiments/io/atomic_file.hpp"
+#include "experiments/io/content_digest.hpp"
 #include "experiments/io/csv_table.hpp"
 #include "experiments/io/interrupt.hpp"
 #include "experiments/io/progress.hpp"
 #include "experiments/io/run_info.hpp"
+#include "experiments/scene/checkpoint.hpp"
 #include "experiments/scene/scene_file.hpp"
 #include "experiments/scene/scene_parts.hpp"
 #include "experiments/scene/stepper.hpp"
@@ -65,19 +67,25 @@ RunInfoEntries scene_entries(const Scene& scene, const World& world) {
           {"frame_poses", rigid ? "world = q (p0 - c0) + (x, y, z); c0 the grain's first centre" : "simulation vertices"}};
 }
 
-/// Every frame: the emitter releases what is due, the stepper steps, the observers look;
-/// returns the wall time.
-double step_frames(int frames, Emitter& emitter, World& world, Stepper& stepper, Observers& observers) {
+/// Every frame from `first`: the emitter releases what is due, the stepper steps, the
+/// observers look; a checkpoint when one is due and on Ctrl-C or SIGTERM (then Interrupted).
+/// Returns the wall time.
+double step_frames(const Scene& scene, int first, const RunParts& parts, const std::filesystem::path& folder,
+                   std::uint64_t scene_digest) {
+  const int frames = scene.solver.frames;
   Progress progress("scene frames", frames);
+  CheckpointClock checkpoints(scene.solver.checkpoint_every);
   const auto start = std::chrono::steady_clock::now();
-  for (int frame = 1; frame <= frames; ++frame) {
+  for (int frame = first; frame <= frames; ++frame) {
     const auto frame_start = std::chrono::steady_clock::now();
-    emitter.emit(world, stepper.time());
-    stepper.step();
+    parts.emitter.emit(parts.world, parts.stepper.time());
+    parts.stepper.step();
     const double wall = seconds_since(frame_start);
-    for (auto& observer : observers) observer->observe(world, stepper, frame, wall);
+    for (auto& observer : parts.observers) observer->observe(parts.world, parts.stepper, frame, wall);
     progress.update(frame);
-    stop_point();
+    const bool stopping = stop_requested();
+    if (stopping || (frame < frames && checkpoints.due(frame))) write_checkpoint(folder, scene_digest, frame, parts);
+    if (stopping) stop_point();
   }
   progress.finish();
   return seconds_since(start);
@@ -101,13 +109,19 @@ SceneRun::SceneRun(const Scene& scene) : scene_(scene), start_(std::chrono::stea
 
 SceneRun::~SceneRun() = default;
 
-SceneResult SceneRun::run(const std::filesystem::path& folder) {
+SceneResult SceneRun::run(const std::filesystem::path& folder, const RunStart& run_start) {
   make_output_folder(folder);
   Observers observers = make_observers(scene_, folder);
   for (auto& observer : observers) observer->begin(world_);
-  const double setup_seconds = seconds_since(start_);
   Stepper stepper(world_.model, scene_);
-  const double simulation_seconds = step_frames(scene_.solver.frames, *emitter_, world_, stepper, observers);
+  const RunParts parts{world_, *emitter_, stepper, observers};
+  int first = 1;
+  if (run_start.resume) {
+    first = resume_from_checkpoint(folder, run_start.scene_digest, parts) + 1;
+    std::printf("rice run: resumed after frame %d\n", first - 1);
+  }
+  const double setup_seconds = seconds_since(start_);
+  const double simulation_seconds = step_frames(scene_, first, parts, folder, run_start.scene_digest);
 
   SceneReport report;
   report.result.simulation_seconds = simulation_seconds;
@@ -121,6 +135,7 @@ SceneResult SceneRun::run(const std::filesystem::path& folder) {
   report.info.push_back({"simulation_wall_s", cell(simulation_seconds)});
   report.info.push_back({"wall_s", cell(seconds_since(start_))});
   write_file_atomically(folder / "run_info.txt", run_info(report.info));
+  std::filesystem::remove(checkpoint_path(folder));  // the run is complete
   return report.result;
 }
 
@@ -157,7 +172,7 @@ RenderCommandSettings scene_render_settings(const SceneRender& r, const Scene& s
 }
 
 SceneResult run_scene_command(const std::filesystem::path& scene_file, const std::vector<std::string>& overrides,
-                              const std::filesystem::path& folder) {
+                              const std::filesystem::path& folder, bool resume) {
   const std::string text = read_scene_text(scene_file);
   const Scene scene = parse_scene(text, scene_file.string(), overrides);
   SceneRun run(scene);  // nothing written before the scene is known to run
@@ -169,7 +184,7 @@ SceneResult run_scene_command(const std::filesystem::path& scene_file, const std
   }
   write_file_atomically(folder / "scene.toml", copy);
   std::printf("scene %s: %s\n", scene.name.c_str(), scene.description.c_str());
-  SceneResult result = run.run(folder);
+  SceneResult result = run.run(folder, {resume, content_digest(copy)});
   if (scene.render) {
     const auto start = std::chrono::steady_clock::now();
     RenderCommandSettings settings = scene_render_settings(*scene.render, scene, folder);

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -20,6 +21,12 @@
 
 namespace rice::experiments {
 
+/// How a run starts.
+struct RunStart {
+  bool resume = false;             ///< from the folder's checkpoint (checkpoint.hpp), or from frame 1
+  std::uint64_t scene_digest = 0;  ///< of the scene's text as run, which its checkpoints carry
+};
+
 class SceneRun {
  public:
   /// Checks the scene (std::invalid_argument naming the key), builds its world and lays out
@@ -27,8 +34,10 @@ class SceneRun {
   explicit SceneRun(const Scene& scene);
   ~SceneRun();
 
-  /// Steps every frame into `folder` (created): the observers' files, then run_info.txt.
-  SceneResult run(const std::filesystem::path& folder);
+  /// Steps every frame into `folder` (created), or those after its checkpoint when resuming:
+  /// the observers' files and checkpoints, then run_info.txt (and the checkpoint goes).
+  /// Throws std::runtime_error when resuming from a checkpoint that is missing or refused.
+  SceneResult run(const std::filesystem::path& folder, const RunStart& start = {});
 
  private:
   Scene scene_;
@@ -41,10 +50,10 @@ class SceneRun {
 SceneResult run_scene(const Scene& scene, const std::filesystem::path& folder);
 
 /// `rice run`: reads the scene file (a SceneError, and nothing written, when it is bad), then
-/// runs it into `folder` with a copy of the file (scene.toml, the overrides listed at its end)
-/// and renders its [render] section.
+/// runs it into `folder` with a copy of the file (scene.toml, the overrides listed at its end),
+/// from frame 1 or, `resume`, after the folder's checkpoint, and renders its [render] section.
 SceneResult run_scene_command(const std::filesystem::path& scene_file, const std::vector<std::string>& overrides,
-                              const std::filesystem::path& folder);
+                              const std::filesystem::path& folder, bool resume = false);
 
 /// `rice render --run` settings for the last frame of a scene's run in `run`: the image and
 /// camera of `render`, the grains' CDRF at the scene's water content.

@@ -52,4 +52,12 @@ void StatsObserver::end(const World& world, const Stepper& stepper, SceneReport&
   report.info.push_back({"penetration_into_container_at_end_m", cell(r.penetration.into_colliders)});
 }
 
+void StatsObserver::save_state(xpbd::StateWriter& out) const { out(stats_.rows(), top_before_removal_); }
+
+void StatsObserver::load_state(xpbd::StateReader& in) {
+  std::vector<std::vector<std::string>> rows;
+  in(rows, top_before_removal_);
+  stats_.set_rows(std::move(rows));
+}
+
 }  // namespace rice::experiments

@@ -19,6 +19,9 @@ class StatsObserver : public Observer {
   void begin(const World& world) override;
   void observe(const World& world, const Stepper& stepper, int frame, double wall_seconds) override;
   void end(const World& world, const Stepper& stepper, SceneReport& report) override;
+  /// The rows so far and the top before the removal.
+  void save_state(xpbd::StateWriter& out) const override;
+  void load_state(xpbd::StateReader& in) override;
 
  private:
   std::filesystem::path folder_;

@@ -29,6 +29,10 @@ class Stepper {
   /// Its settings and where its time went, for run_info.txt.
   void report(RunInfoEntries& info) const;
 
+  /// The model's and the solver's state between frames, for checkpoints.
+  void save_state(xpbd::StateWriter& out) const { solver_.save_state(out); }
+  void load_state(xpbd::StateReader& in) { solver_.load_state(in); }
+
  private:
   xpbd::Solver solver_;
 };

@@ -2,12 +2,16 @@
 #include "tests/fuzz/fuzz_targets.hpp"
 
 #include <cstring>
+#include <map>
 #include <optional>
 #include <sstream>
 
+#include "experiments/scene/checkpoint_file.hpp"
 #include "experiments/scene/scene_file.hpp"
 #include "grains/absorption_table.hpp"
 #include "grains/mesh_io.hpp"
+#include "xpbd/state_archive.hpp"
+#include "xpbd/types.hpp"
 
 namespace rice::fuzz {
 namespace {
@@ -123,12 +127,35 @@ void read_scene(std::string_view bytes) {
          "two reads of one input differ");
 }
 
+/// A checkpoint file (experiments/scene/checkpoint_file.hpp), read as the scene its own header
+/// names, so that only its version, sizes and state digest can refuse it: read, it writes back
+/// to the same bytes. Then the same bytes as a state (xpbd/state_archive.hpp): read as sizes and
+/// elements, they end in std::runtime_error or values, never in an allocation past their size.
+void read_checkpoint(std::string_view bytes) {
+  std::uint64_t digest = 0;
+  if (bytes.size() >= 28) std::memcpy(&digest, bytes.data() + 20, sizeof digest);
+  const auto checkpoint = read_or_refuse([&] { return experiments::parse_checkpoint(bytes, digest, kName); });
+  if (checkpoint) expect(experiments::checkpoint_bytes(*checkpoint) == bytes, "a checkpoint read back differs");
+  xpbd::StateReader in(bytes);
+  std::vector<double> numbers;
+  std::map<std::pair<int, int>, double> pairs;
+  std::string text;
+  xpbd::Positions x;
+  std::vector<std::vector<std::string>> rows;
+  try {
+    in(numbers, pairs, text, x, rows);
+  } catch (const std::runtime_error&) {
+    return;
+  }
+  expect(sizeof(double) * (numbers.size() + x.size()) + text.size() <= bytes.size(), "a state larger than its bytes");
+}
+
 }  // namespace
 
 const std::vector<Target>& targets() {
   static const std::vector<Target> all = {
       {"obj", read_obj}, {"off", read_off}, {"ply", read_ply}, {"medit", medit_round_trip}, {"absorption", read_absorption},
-      {"scene", read_scene}};
+      {"scene", read_scene}, {"checkpoint", read_checkpoint}};
   return all;
 }
 

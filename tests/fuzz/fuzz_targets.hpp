@@ -27,7 +27,8 @@ struct Target {
 };
 
 /// Every fuzz target: obj, off, ply, medit (reader and writer round trip), absorption, scene
-/// (experiments/scene/scene_file.hpp: values within the documented ranges, the same twice).
+/// (experiments/scene/scene_file.hpp: values within the documented ranges, the same twice),
+/// checkpoint (experiments/scene/checkpoint_file.hpp and the state reader).
 const std::vector<Target>& targets();
 
 /// The target called `name`; throws std::invalid_argument for an unknown name.
