@@ -19,10 +19,11 @@ class SceneCommands : public CommandFamily {
     run->add_option("scene", scene_, "the scene's TOML file")->required();
     run->add_option("--out", out_, "output folder")->capture_default_str();
     run->add_option("--set", overrides_, "section.key=value: overrides a key of the file (repeatable)");
-    run->add_flag("--resume", resume_,
+    run->add_flag("--resume", options_.resume,
                   "continue from the last checkpoint in --out (the same scene file and --set overrides)");
+    run->add_flag("!--no-render", options_.render, "skip the scene's [render] section");
     add(run, [this] { experiments::validate(read_scene_file(scene_, overrides_)); },
-        [this] { run_scene_command(scene_, overrides_, out_, resume_); });
+        [this] { run_scene_command(scene_, overrides_, out_, options_); });
     CLI::App* keys = app.add_subcommand("scene-keys", "every key a scene file may hold, as Markdown (docs/scene-keys.md)");
     add(keys, nullptr, [] { std::cout << scene_keys_markdown(); });
   }
@@ -30,7 +31,7 @@ class SceneCommands : public CommandFamily {
  private:
   std::string scene_, out_ = "out/scene";
   std::vector<std::string> overrides_;
-  bool resume_ = false;
+  RunCommandOptions options_;
 };
 
 }  // namespace

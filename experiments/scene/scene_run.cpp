@@ -10,6 +10,7 @@
 #include "experiments/io/content_digest.hpp"
 #include "experiments/io/csv_table.hpp"
 #include "experiments/io/interrupt.hpp"
+#include "experiments/io/peak_memory.hpp"
 #include "experiments/io/progress.hpp"
 #include "experiments/io/run_info.hpp"
 #include "experiments/scene/checkpoint.hpp"
@@ -133,6 +134,7 @@ SceneResult SceneRun::run(const std::filesystem::path& folder, const RunStart& r
   print_summary(scene_, stepper, simulation_seconds, setup_seconds);
   report.info.push_back({"setup_wall_s", cell(setup_seconds)});
   report.info.push_back({"simulation_wall_s", cell(simulation_seconds)});
+  report.info.push_back({"peak_memory_mib", cell(peak_resident_mib())});  // before any render
   report.info.push_back({"wall_s", cell(seconds_since(start_))});
   write_file_atomically(folder / "run_info.txt", run_info(report.info));
   std::filesystem::remove(checkpoint_path(folder));  // the run is complete
@@ -172,7 +174,7 @@ RenderCommandSettings scene_render_settings(const SceneRender& r, const Scene& s
 }
 
 SceneResult run_scene_command(const std::filesystem::path& scene_file, const std::vector<std::string>& overrides,
-                              const std::filesystem::path& folder, bool resume) {
+                              const std::filesystem::path& folder, const RunCommandOptions& options) {
   const std::string text = read_scene_text(scene_file);
   const Scene scene = parse_scene(text, scene_file.string(), overrides);
   SceneRun run(scene);  // nothing written before the scene is known to run
@@ -184,8 +186,8 @@ SceneResult run_scene_command(const std::filesystem::path& scene_file, const std
   }
   write_file_atomically(folder / "scene.toml", copy);
   std::printf("scene %s: %s\n", scene.name.c_str(), scene.description.c_str());
-  SceneResult result = run.run(folder, {resume, content_digest(copy)});
-  if (scene.render) {
+  SceneResult result = run.run(folder, {options.resume, content_digest(copy)});
+  if (scene.render && options.render) {
     const auto start = std::chrono::steady_clock::now();
     RenderCommandSettings settings = scene_render_settings(*scene.render, scene, folder);
     render_command(settings, folder / "render");

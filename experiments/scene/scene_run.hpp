@@ -49,11 +49,17 @@ class SceneRun {
 /// SceneRun(scene).run(folder).
 SceneResult run_scene(const Scene& scene, const std::filesystem::path& folder);
 
+/// `rice run`'s flags.
+struct RunCommandOptions {
+  bool resume = false;  ///< after the folder's checkpoint, or from frame 1
+  bool render = true;   ///< the scene's [render] section, if it has one
+};
+
 /// `rice run`: reads the scene file (a SceneError, and nothing written, when it is bad), then
-/// runs it into `folder` with a copy of the file (scene.toml, the overrides listed at its end),
-/// from frame 1 or, `resume`, after the folder's checkpoint, and renders its [render] section.
+/// runs it into `folder` with a copy of the file (scene.toml, the overrides listed at its end)
+/// and renders its [render] section, as `options` say.
 SceneResult run_scene_command(const std::filesystem::path& scene_file, const std::vector<std::string>& overrides,
-                              const std::filesystem::path& folder, bool resume = false);
+                              const std::filesystem::path& folder, const RunCommandOptions& options = {});
 
 /// `rice render --run` settings for the last frame of a scene's run in `run`: the image and
 /// camera of `render`, the grains' CDRF at the scene's water content.
