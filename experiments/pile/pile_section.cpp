@@ -8,8 +8,7 @@
 
 namespace rice::experiments {
 
-PileSection cut_pile(const std::vector<grains::SurfaceMesh>& grains, double height, const Eigen::Vector2d& lower,
-                     const Eigen::Vector2d& upper, double pixel) {
+PileSection empty_section(const Eigen::Vector2d& lower, const Eigen::Vector2d& upper, double pixel) {
   if (!(pixel > 0.0) || !std::isfinite(pixel)) throw std::invalid_argument("pile section: the pixel must be positive");
   const Eigen::Vector2d extent = (upper - lower) / pixel;
   if (!(extent.minCoeff() > 0.0) || extent.prod() > double(1 << 26))
@@ -20,45 +19,54 @@ PileSection cut_pile(const std::vector<grains::SurfaceMesh>& grains, double heig
   section.width = static_cast<int>(std::ceil(extent.x()));
   section.height = static_cast<int>(std::ceil(extent.y()));
   section.inside.assign(static_cast<size_t>(section.width) * section.height, 0);
-  std::vector<std::vector<double>> crossings(section.height);  // per row, one grain's
-  for (const grains::SurfaceMesh& mesh : grains) {
-    if (mesh.V.col(2).minCoeff() > height || mesh.V.col(2).maxCoeff() < height) continue;
-    for (auto& row : crossings) row.clear();
-    for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-      // The triangle's segment in the plane: the points where its edges cross z = height
-      // (a vertex exactly on the plane counts as above, so each crossing is counted once).
-      Eigen::Vector2d ends[2];
-      int found = 0;
-      for (int e = 0; e < 3; ++e) {
-        const Eigen::Vector3d a = mesh.V.row(mesh.F(f, e)), b = mesh.V.row(mesh.F(f, (e + 1) % 3));
-        if ((a.z() >= height) == (b.z() >= height)) continue;
-        const double t = (height - a.z()) / (b.z() - a.z());
-        if (found < 2) ends[found] = (a + t * (b - a)).head<2>();
-        ++found;
-      }
-      if (found != 2) continue;
-      // Rows whose pixel centres the segment spans (half-open in y, so a shared end counts once).
-      const Eigen::Vector2d& p = ends[0];
-      const Eigen::Vector2d& q = ends[1];
-      if (p.y() == q.y()) continue;
-      const double y_low = std::min(p.y(), q.y()), y_high = std::max(p.y(), q.y());
-      const int first = std::max(0, static_cast<int>(std::ceil((y_low - lower.y()) / pixel - 0.5)));
-      const int last = std::min(section.height - 1, static_cast<int>(std::ceil((y_high - lower.y()) / pixel - 0.5)) - 1);
-      for (int j = first; j <= last; ++j) {
-        const double y = lower.y() + (j + 0.5) * pixel;
-        crossings[j].push_back(p.x() + (y - p.y()) / (q.y() - p.y()) * (q.x() - p.x()));
-      }
+  return section;
+}
+
+void add_to_section(PileSection& section, const grains::SurfaceMesh& mesh, double height) {
+  if (mesh.V.col(2).minCoeff() > height || mesh.V.col(2).maxCoeff() < height) return;
+  const Eigen::Vector2d& lower = section.lower;
+  const double pixel = section.pixel;
+  std::vector<std::vector<double>> crossings(section.height);  // per row
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    // The triangle's segment in the plane: the points where its edges cross z = height
+    // (a vertex exactly on the plane counts as above, so each crossing is counted once).
+    Eigen::Vector2d ends[2];
+    int found = 0;
+    for (int e = 0; e < 3; ++e) {
+      const Eigen::Vector3d a = mesh.V.row(mesh.F(f, e)), b = mesh.V.row(mesh.F(f, (e + 1) % 3));
+      if ((a.z() >= height) == (b.z() >= height)) continue;
+      const double t = (height - a.z()) / (b.z() - a.z());
+      if (found < 2) ends[found] = (a + t * (b - a)).head<2>();
+      ++found;
     }
-    for (int j = 0; j < section.height; ++j) {
-      std::vector<double>& xs = crossings[j];
-      std::sort(xs.begin(), xs.end());
-      for (size_t k = 0; k + 1 < xs.size(); k += 2) {
-        const int from = std::max(0, static_cast<int>(std::ceil((xs[k] - lower.x()) / pixel - 0.5)));
-        const int to = std::min(section.width - 1, static_cast<int>(std::ceil((xs[k + 1] - lower.x()) / pixel - 0.5)) - 1);
-        for (int i = from; i <= to; ++i) section.inside[static_cast<size_t>(j) * section.width + i] = 1;
-      }
+    if (found != 2) continue;
+    // Rows whose pixel centres the segment spans (half-open in y, so a shared end counts once).
+    const Eigen::Vector2d& p = ends[0];
+    const Eigen::Vector2d& q = ends[1];
+    if (p.y() == q.y()) continue;
+    const double y_low = std::min(p.y(), q.y()), y_high = std::max(p.y(), q.y());
+    const int first = std::max(0, static_cast<int>(std::ceil((y_low - lower.y()) / pixel - 0.5)));
+    const int last = std::min(section.height - 1, static_cast<int>(std::ceil((y_high - lower.y()) / pixel - 0.5)) - 1);
+    for (int j = first; j <= last; ++j) {
+      const double y = lower.y() + (j + 0.5) * pixel;
+      crossings[j].push_back(p.x() + (y - p.y()) / (q.y() - p.y()) * (q.x() - p.x()));
     }
   }
+  for (int j = 0; j < section.height; ++j) {
+    std::vector<double>& xs = crossings[j];
+    std::sort(xs.begin(), xs.end());
+    for (size_t k = 0; k + 1 < xs.size(); k += 2) {
+      const int from = std::max(0, static_cast<int>(std::ceil((xs[k] - lower.x()) / pixel - 0.5)));
+      const int to = std::min(section.width - 1, static_cast<int>(std::ceil((xs[k + 1] - lower.x()) / pixel - 0.5)) - 1);
+      for (int i = from; i <= to; ++i) section.inside[static_cast<size_t>(j) * section.width + i] = 1;
+    }
+  }
+}
+
+PileSection cut_pile(const std::vector<grains::SurfaceMesh>& grains, double height, const Eigen::Vector2d& lower,
+                     const Eigen::Vector2d& upper, double pixel) {
+  PileSection section = empty_section(lower, upper, pixel);
+  for (const grains::SurfaceMesh& mesh : grains) add_to_section(section, mesh, height);
   return section;
 }
 

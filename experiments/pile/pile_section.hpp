@@ -25,8 +25,15 @@ struct PileSection {
   bool at(int i, int j) const { return inside[static_cast<size_t>(j) * width + i]; }
 };
 
-/// The cut at z = `height` over the rectangle [lower, upper] in pixels of side `pixel`.
+/// A section with no grain in it over the rectangle [lower, upper], in pixels of side `pixel`.
 /// Throws std::invalid_argument for a pixel that is not positive or over 2^26 pixels.
+PileSection empty_section(const Eigen::Vector2d& lower, const Eigen::Vector2d& upper, double pixel);
+
+/// Marks the pixels whose centres lie inside `mesh`'s cut at z = `height` (even–odd along rows).
+void add_to_section(PileSection& section, const grains::SurfaceMesh& mesh, double height);
+
+/// The cut at z = `height` over the rectangle [lower, upper] in pixels of side `pixel`:
+/// empty_section, then add_to_section for each grain.
 PileSection cut_pile(const std::vector<grains::SurfaceMesh>& grains, double height, const Eigen::Vector2d& lower,
                      const Eigen::Vector2d& upper, double pixel);
 
