@@ -13,6 +13,7 @@
 #include "experiments/studies/pour_substep_study.hpp"
 #include "experiments/studies/path_depth_study.hpp"
 #include "experiments/studies/render_study.hpp"
+#include "experiments/studies/scale_study.hpp"
 #include "experiments/studies/scene_convergence_study.hpp"
 #include "experiments/studies/soft_curvature_study.hpp"
 #include "experiments/studies/soft_instance_study.hpp"
@@ -43,6 +44,7 @@ class StudyCommands : public CommandFamily {
     add_oscillator(study);
     add_convergence(study);
     add_scene_convergence(study);
+    add_scale(study);
   }
 
  private:
@@ -388,6 +390,34 @@ class StudyCommands : public CommandFamily {
     return settings;
   }
 
+  void add_scale(CLI::App* study) {
+    CLI::App* c = study->add_subcommand(
+        "scale", "clumps of 100 to 34,000 grains, rigid and soft: wall time per grain-frame and memory per grain");
+    ScaleStudySettings& s = scale_;
+    c->add_option("--out", scale_out_, "output folder")->capture_default_str();
+    c->add_flag("--quick", scale_quick_, "20 and 60 grains for 10 frames, for CI (seconds)");
+    c->add_option("--scene", s.scene, "the scene file whose grains drop as a clump onto its plate")
+        ->capture_default_str();
+    scale_counts_ = c->add_option("--counts", s.counts, "grain counts, rising")->check(number_in(1, 1e5));
+    c->add_option("--bodies", s.bodies, "rigid, soft or both")->capture_default_str();
+    scale_frames_ = c->add_option("--frames", s.frames, "frames of each run")->check(number_in(1, 1e5));
+    c->add_option("--run-threads", s.threads, "threads of each run; 0: the machine's")->check(number_in(0, 1024));
+    add(c, [this] { experiments::validate(scale_settings()); },
+        [this] { scale_study_command(scale_settings(), scale_out_); });
+  }
+
+  /// --quick's counts and frames, then the options given.
+  ScaleStudySettings scale_settings() const {
+    if (!scale_quick_) return scale_;
+    ScaleStudySettings settings = ScaleStudySettings::quick();
+    settings.scene = scale_.scene;
+    settings.bodies = scale_.bodies;
+    settings.threads = scale_.threads;
+    if (scale_counts_->count()) settings.counts = scale_.counts;
+    if (scale_frames_->count()) settings.frames = scale_.frames;
+    return settings;
+  }
+
   /// --quick's settings, then the options given.
   ConvergenceSettings convergence_settings() const {
     ConvergenceSettings settings = convergence_quick_ ? ConvergenceSettings::quick() : ConvergenceSettings{};
@@ -437,6 +467,10 @@ class StudyCommands : public CommandFamily {
   std::string convergence_out_ = "out/convergence";
   bool convergence_quick_ = false;
   CLI::Option *duration_ = nullptr, *young_ = nullptr, *tau_ = nullptr;
+  ScaleStudySettings scale_;
+  std::string scale_out_ = "out/scale";
+  bool scale_quick_ = false;
+  CLI::Option *scale_counts_ = nullptr, *scale_frames_ = nullptr;
 };
 
 }  // namespace

@@ -3,12 +3,12 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <string>
 #include <stdexcept>
 
 #include "experiments/io/numeric_csv.hpp"
 #include "experiments/io/progress.hpp"
+#include "experiments/io/run_info.hpp"
 #include "experiments/render/rigid_fit.hpp"
 #include "grains/embedding.hpp"
 #include "grains/mesh_io.hpp"
@@ -24,10 +24,8 @@ std::filesystem::path run_frame_path(const std::filesystem::path& run, int frame
 }
 
 double run_fps(const std::filesystem::path& run) {
-  std::ifstream info(run / "run_info.txt");
-  for (std::string line; std::getline(info, line);)
-    if (line.starts_with("fps: ")) return std::stod(line.substr(5));
-  return 30.0;
+  const std::string fps = run_info_value(run / "run_info.txt", "fps");
+  return fps.empty() ? 30.0 : std::stod(fps);
 }
 
 std::vector<std::filesystem::path> run_frames(const std::filesystem::path& run) {

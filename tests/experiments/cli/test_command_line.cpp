@@ -68,6 +68,7 @@ std::vector<std::string> required_arguments(const std::vector<std::string>& path
   if (path == std::vector<std::string>{"study", "soft-curvature"} || path == std::vector<std::string>{"study", "soft-instances"} ||
       path == std::vector<std::string>{"study", "frame-cost"})
     return {"--run", RICE_TEST_SCRATCH};
+  if (path == std::vector<std::string>{"study", "scale"}) return {"--scene", RICE_SCENES_DIR "/drop.toml"};
   return {};
 }
 

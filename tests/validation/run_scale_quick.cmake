@@ -1,0 +1,38 @@
+# Runs `rice study scale --quick` into OUT and checks its outputs: a CSV row per body and count
+# (2 x 2), each with a positive time per grain-frame whose phases add up to no more than it, a
+# positive peak memory and contacts; the plot and the run info. Called by CTest
+# (tests/CMakeLists.txt) with -DRICE=<rice binary> -DSCENE=<experiments/scenes/drop.toml> -DOUT=<folder>.
+file(REMOVE_RECURSE "${OUT}")
+execute_process(COMMAND "${RICE}" study scale --quick --scene "${SCENE}" --out "${OUT}"
+                RESULT_VARIABLE result OUTPUT_QUIET ERROR_VARIABLE error)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "rice study scale --quick exited with ${result}: ${error}")
+endif()
+foreach(name scale.csv scale.png run_info.txt rigid_20/stats.csv soft_60/run_info.txt)
+  if(NOT EXISTS "${OUT}/${name}")
+    message(FATAL_ERROR "missing ${OUT}/${name}")
+  endif()
+endforeach()
+file(STRINGS "${OUT}/scale.csv" rows)
+list(LENGTH rows count)
+if(NOT count EQUAL 5)
+  message(FATAL_ERROR "scale.csv has ${count} lines, not a header and 4 runs")
+endif()
+list(REMOVE_AT rows 0)
+foreach(row ${rows})
+  string(REPLACE "," ";" cells "${row}")
+  list(GET cells 3 total)
+  list(GET cells 4 broad)
+  list(GET cells 5 narrow)
+  list(GET cells 6 solve)
+  list(GET cells 7 sleeping)
+  list(GET cells 8 memory)
+  list(GET cells 10 contacts)
+  foreach(value total broad narrow solve sleeping memory contacts)  # integer parts: CMake's math has no decimals
+    string(REGEX REPLACE "\\..*" "" ${value}_int "${${value}}")
+  endforeach()
+  math(EXPR phases "${broad_int} + ${narrow_int} + ${solve_int} + ${sleeping_int}")
+  if(total_int LESS 1 OR phases GREATER total_int OR memory_int LESS 1 OR NOT contacts GREATER 0)
+    message(FATAL_ERROR "a run without time, memory or contacts, or whose phases exceed its time: ${row}")
+  endif()
+endforeach()
