@@ -158,8 +158,9 @@ void ContactSolver::add_collider_candidates(double time, double span, std::vecto
 }
 
 void ContactSolver::keep_states_in_reach() {
-  // The contact states of pairs that stay in reach carry over, with their interval sums reset.
-  std::vector<ContactState> kept;
+  // The contact states of pairs that stay in reach carry over, with their interval sums reset,
+  // compacted in place (a new vector each broad phase was grown from nothing).
+  size_t kept = 0;
   auto pair = body_pairs_.begin();
   for (ContactState& state : states_) {
     const std::pair<int, int> key(state.key[0], state.key[1]);
@@ -167,9 +168,9 @@ void ContactSolver::keep_states_in_reach() {
     if (pair == body_pairs_.end() || std::pair(pair->a, pair->b) != key) continue;
     state.interval_normal = 0.0;
     state.interval_friction.setZero();
-    kept.push_back(state);
+    states_[kept++] = state;
   }
-  states_ = std::move(kept);
+  states_.resize(kept);
 }
 
 template <class Function>
@@ -269,8 +270,11 @@ void ContactSolver::begin_substep(double time, double h, const Positions& x_prev
   for_each_body(static_cast<int>(active_bodies_.size()),
                 [&](int k) { update_centres(active_bodies_[k], &x_previous, radii); });
   // Contacts come out in key order, so the states of the last substep are merged in one pass;
-  // a state whose spheres do not touch in this substep loses its anchors.
-  std::vector<ContactState> previous = std::move(states_);
+  // a state whose spheres do not touch in this substep loses its anchors. The two buffers
+  // swap, keeping their memory: a buffer moved from and grown again each substep took a
+  // third of a 10,000-grain clump's time in page faults.
+  std::swap(states_, previous_states_);
+  std::vector<ContactState>& previous = previous_states_;
   states_.clear();
   auto old = previous.begin();
   const auto state_of = [&](const std::array<int, 4>& key) {

@@ -198,6 +198,7 @@ class ContactSolver {
   double interval_time_ = 0.0;           ///< its length so far [s]
   std::vector<std::array<int, 2>> sphere_pairs_;
   std::vector<ContactState> states_;
+  std::vector<ContactState> previous_states_;  ///< begin_substep's merge: the last substep's states
   std::vector<int> sphere_offset_;                ///< first sphere of each body in the arrays below
   std::vector<Vec3> centre_now_, centre_start_;  ///< sphere centres after prediction and at the substep's start
   std::vector<Vec3> centre_at_broad_phase_;  ///< sphere centres at the last broad phase
