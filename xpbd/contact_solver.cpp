@@ -637,16 +637,17 @@ void ContactSolver::update_bonds() {
 }
 
 /// What carries over between steps: the contacts' states (anchors, sliding, the forces held
-/// in particle steps), the broad phase's pairs and its sphere centres and time, the radii and
-/// their time, the centres of sleeping bodies, the collider impulses of the interval, the
-/// statistics (the deepest penetration so far) and the bonds. The rest is rebuilt each substep.
+/// in particle steps), the broad phase's sphere centres and time, the radii and their time,
+/// the centres of sleeping bodies, the collider impulses of the interval, the statistics (the
+/// deepest penetration so far) and the bonds. The broad phase's pairs are not kept, since every
+/// step starts with a broad phase (with them a 10,000-grain clump's checkpoint was 402 MB, without
+/// them 22.5 MB), and the rest is rebuilt each substep.
 template <class Self, class Archive>
 void ContactSolver::transfer_state(Self& self, Archive& archive) {
   auto& s = self.statistics_;
-  archive(self.body_pairs_, self.collider_impulses_, self.interval_time_, self.sphere_pairs_, self.states_,
-          self.centre_now_, self.centre_start_, self.centre_at_broad_phase_, self.broad_phase_time_, self.radius_,
-          self.radii_time_, self.centres_at_rest_, self.active_bodies_, s.candidates, s.contacts, s.max_penetration,
-          s.bonds, s.bonds_broken, s.collider_forces);
+  archive(self.collider_impulses_, self.interval_time_, self.states_, self.centre_now_, self.centre_start_,
+          self.centre_at_broad_phase_, self.broad_phase_time_, self.radius_, self.radii_time_, self.centres_at_rest_,
+          s.candidates, s.contacts, s.max_penetration, s.bonds, s.bonds_broken, s.collider_forces);
   bool bonds = self.bonds_.has_value();
   archive(bonds);
   if (bonds != self.bonds_.has_value()) throw std::runtime_error("the state's cohesion does not match the model's");

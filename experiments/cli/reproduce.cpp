@@ -123,7 +123,8 @@ std::vector<ReproduceStep> solver_and_grain_steps(const std::filesystem::path& s
   };
 }
 
-/// The shading fits, the paper's scenes (figure 10, table 1) and the pressed clump.
+/// The shading fits, the paper's scenes (figure 10, table 1), the pressed clump, the rice
+/// cooker and the scale study.
 std::vector<ReproduceStep> shading_fit_and_scene_steps(const std::filesystem::path& out, bool full,
                                                        const std::filesystem::path& scenes) {
   return {
@@ -151,6 +152,19 @@ std::vector<ReproduceStep> shading_fit_and_scene_steps(const std::filesystem::pa
        "soft-curvature",
        "press",
        {}},
+      {"A rice cooker: grains settled in its pot, a portion lifted out by a paddle (a tenth; all with --full)",
+       full ? std::vector<std::string>{"run", (scenes / "rice_cooker.toml").string()}
+            : std::vector<std::string>{"run", (scenes / "rice_cooker.toml").string(), "--set", "grains.count=3400"},
+       "rice-cooker",
+       "",
+       {scenes / "rice_cooker.toml", scenes / "meshes"}},
+      {"Scale: time and memory per grain for clumps of 100 to 3000 grains (to 34,000 with --full)",
+       full ? std::vector<std::string>{"study", "scale", "--scene", (scenes / "drop.toml").string()}
+            : std::vector<std::string>{"study", "scale", "--scene", (scenes / "drop.toml").string(), "--counts", "100",
+                                       "300", "1000", "3000"},
+       "scale",
+       "",
+       {scenes / "drop.toml"}},
   };
 }
 

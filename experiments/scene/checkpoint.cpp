@@ -31,7 +31,12 @@ void transfer_parts(Archive& archive, const RunParts& parts) {
 void write_checkpoint(const std::filesystem::path& run, std::uint64_t scene_digest, int frame, const RunParts& parts) {
   xpbd::StateWriter out;
   transfer_parts(out, parts);
-  write_file_atomically(checkpoint_path(run), checkpoint_bytes({scene_digest, frame, out.bytes()}));
+  const std::string& state = out.bytes();  // written after the header, not copied behind it
+  const std::string header = checkpoint_header(scene_digest, frame, state);
+  write_file_atomically(checkpoint_path(run), [&](std::ostream& file) {
+    file.write(header.data(), static_cast<std::streamsize>(header.size()));
+    file.write(state.data(), static_cast<std::streamsize>(state.size()));
+  });
 }
 
 int resume_from_checkpoint(const std::filesystem::path& run, std::uint64_t scene_digest, const RunParts& parts) {

@@ -37,15 +37,19 @@ std::string hex(std::uint64_t value) {
 
 }  // namespace
 
-std::string checkpoint_bytes(const Checkpoint& checkpoint) {
+std::string checkpoint_header(std::uint64_t scene_digest, int frame, std::string_view state) {
   CheckpointHeader header;
-  header.scene_digest = checkpoint.scene_digest;
-  header.frame = checkpoint.frame;
-  header.state_size = checkpoint.state.size();
-  header.state_digest = content_digest(checkpoint.state);
+  header.scene_digest = scene_digest;
+  header.frame = frame;
+  header.state_size = state.size();
+  header.state_digest = content_digest(state);
   xpbd::StateWriter out;
   transfer_header(out, header);
-  return std::string(kMagic) + out.bytes() + checkpoint.state;
+  return std::string(kMagic) + out.bytes();
+}
+
+std::string checkpoint_bytes(const Checkpoint& checkpoint) {
+  return checkpoint_header(checkpoint.scene_digest, checkpoint.frame, checkpoint.state) + checkpoint.state;
 }
 
 Checkpoint parse_checkpoint(std::string_view bytes, std::uint64_t scene_digest, const std::string& source) {

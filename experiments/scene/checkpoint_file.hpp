@@ -27,7 +27,10 @@ struct Checkpoint {
   std::string state;  ///< the run's parts (checkpoint.hpp)
 };
 
-/// The bytes of a checkpoint file.
+/// The bytes of a checkpoint file before its state: the magic and the header.
+std::string checkpoint_header(std::uint64_t scene_digest, int frame, std::string_view state);
+
+/// The bytes of a checkpoint file: its header, then its state.
 std::string checkpoint_bytes(const Checkpoint& checkpoint);
 
 /// The checkpoint in `bytes`, read from `source` (for messages). Throws std::runtime_error

@@ -29,7 +29,8 @@ std::vector<std::string> run_arguments(const ScaleStudySettings& s, const std::s
   if (s.threads > 0) argv.insert(argv.end(), {"--threads", std::to_string(s.threads)});
   argv.insert(argv.end(), {"run", std::filesystem::absolute(s.scene).string(), "--no-render", "--out", out.string()});
   for (const std::string& set :
-       {"grains.count=" + std::to_string(count), "grains.body=\"" + body + "\"", "solver.frames=" + std::to_string(s.frames),
+       {"grains.count=" + std::to_string(count), "grains.body=\"" + body + "\"",
+        "solver.frames=" + std::to_string(s.frames),
         "emitter.radius_m=" + cell(clump_radius(count))})
     argv.insert(argv.end(), {"--set", set});
   return argv;
@@ -78,7 +79,8 @@ ScaleStudySettings ScaleStudySettings::quick() {
 
 void validate(const ScaleStudySettings& s) {
   if (!std::filesystem::is_regular_file(s.scene)) throw std::invalid_argument("--scene: no file " + s.scene.string());
-  if (s.counts.empty() || s.frames < 1 || s.threads < 0) throw std::invalid_argument("--counts and --frames must be given");
+  if (s.counts.empty() || s.frames < 1 || s.threads < 0)
+    throw std::invalid_argument("--counts and --frames must be given");
   for (size_t k = 0; k < s.counts.size(); ++k)
     if (s.counts[k] < 1 || s.counts[k] > 100000 || (k > 0 && s.counts[k] <= s.counts[k - 1]))
       throw std::invalid_argument("--counts must rise, each in [1, 100000]");

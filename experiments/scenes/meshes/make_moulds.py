@@ -3,7 +3,9 @@
 corners: onigiri_mould.obj (a rounded equilateral triangle, paper Fig. 16) and shari_mould.obj
 (a rounded oblong, Fig. 14), each standing on z = 0 in metres, and onigiri_lid.obj and
 shari_lid.obj, 1 cm thick, the same outline 2 mm in from the mould's walls (a lid as wide as
-the mould would wedge grains between itself and the walls). Rerun after changing a size:
+the mould would wedge grains between itself and the walls); drop_cup.obj; and the rice cooker's
+pot, rice_cooker_pot.obj (a cylinder's room 20 cm across), and its paddle's blade, shamoji.obj.
+Rerun after changing a size:
     python3 experiments/scenes/meshes/make_moulds.py
 """
 import math
@@ -72,3 +74,15 @@ write_prism(here / "shari_mould.obj", rounded_outline(oblong(length, width), cor
 write_prism(here / "shari_lid.obj", rounded_outline(oblong(length - 2 * GAP, width - 2 * GAP), corner - GAP), 0.01)
 side, corner = 0.024, 0.008  # drop cup: a rounded square [m], filled and then taken away from under the grains
 write_prism(here / "drop_cup.obj", rounded_outline(oblong(side, side), corner), 0.04)
+
+
+def circle(radius, segments=64):
+    return [(radius * math.cos(2 * math.pi * k / segments), radius * math.sin(2 * math.pi * k / segments))
+            for k in range(segments)]
+
+
+# Rice cooker: the inner pot of a 5.5-cup cooker, 20 cm across and 12 cm deep (the room inside).
+write_prism(here / "rice_cooker_pot.obj", circle(0.1), 0.12)
+# Shamoji (rice paddle): its blade, a rounded oblong 9 x 7 cm and 6 mm thick, lying in z = 0..0.006;
+# the scene turns and moves it.
+write_prism(here / "shamoji.obj", rounded_outline(oblong(0.09, 0.07), 0.03), 0.006)
