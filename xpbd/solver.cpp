@@ -572,8 +572,9 @@ StepDiagnostics Solver::measure(double h) const {
 
 /// The model's particles and rigid bodies and its bodies' sleep, then the solver's own: the
 /// corotated tets' rotations and vertex block descent's last velocities (both warm starts),
-/// the sleep marks, the step count and timings, and the contact solver's. The multipliers and
-/// the substep's positions start afresh each substep and are not kept.
+/// the step count and timings, and the contact solver's. The multipliers and the substep's
+/// positions start afresh each substep, and the sleep marks are rebuilt from the bodies at each
+/// step's first broad phase (mark_sleeping), so none of them is kept.
 template <class Self, class Archive>
 void Solver::transfer_state(Self& self, Archive& archive) {
   auto& model = self.model_;
@@ -582,8 +583,7 @@ void Solver::transfer_state(Self& self, Archive& archive) {
   if (model.particles.size() != particles || static_cast<long>(model.rigid_bodies.size()) != rigid)
     throw std::runtime_error("the state's particles or rigid bodies do not match the model's");
   for (auto& body : model.bodies) archive(body.asleep, body.quiet_steps, body.moving);
-  archive(self.rotation_, self.v_previous_, self.asleep_particle_, self.asleep_rigid_, self.all_asleep_, self.step_,
-          self.timings_);
+  archive(self.rotation_, self.v_previous_, self.step_, self.timings_);
   bool contacts = self.contacts_ != nullptr;
   archive(contacts);
   if (contacts != (self.contacts_ != nullptr)) throw std::runtime_error("the state's contacts do not match the model's");
