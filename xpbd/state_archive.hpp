@@ -42,16 +42,20 @@ class StateWriter {
   const std::string& bytes() const { return bytes_; }
 
  private:
+  /// Appends `n` bytes from `from`, which may be null when `n` is 0 (an empty vector's data()).
+  void put(const void* from, std::size_t n) {
+    if (n > 0) bytes_.append(static_cast<const char*>(from), n);
+  }
   template <PlainData T>
   void write(const T& value) {
-    bytes_.append(reinterpret_cast<const char*>(&value), sizeof(T));
+    put(&value, sizeof(T));
   }
   template <class T, int R, int C, int O, int MR, int MC>
     requires(R == Eigen::Dynamic || C == Eigen::Dynamic)
   void write(const Eigen::Matrix<T, R, C, O, MR, MC>& m) {
     write(static_cast<std::int64_t>(m.rows()));
     write(static_cast<std::int64_t>(m.cols()));
-    bytes_.append(reinterpret_cast<const char*>(m.data()), sizeof(T) * m.size());
+    put(m.data(), sizeof(T) * m.size());
   }
   void write(const std::string& s) {
     write(static_cast<std::uint64_t>(s.size()));
@@ -61,7 +65,7 @@ class StateWriter {
   void write(const std::vector<T>& v) {
     write(static_cast<std::uint64_t>(v.size()));
     if constexpr (PlainData<T>) {
-      bytes_.append(reinterpret_cast<const char*>(v.data()), sizeof(T) * v.size());
+      put(v.data(), sizeof(T) * v.size());
     } else {
       for (const T& e : v) write(e);
     }
@@ -103,6 +107,11 @@ class StateReader {
     position_ += n;
     return at;
   }
+  /// Copies the next `n` bytes to `to`, which may be null when `n` is 0 (an empty vector's data()).
+  void take_into(void* to, std::size_t n) {
+    const char* from = take(n);
+    if (n > 0) std::memcpy(to, from, n);
+  }
   /// A count of elements of `element_size` bytes each, refused when the bytes left cannot hold it.
   std::size_t count(std::size_t element_size) {
     std::uint64_t n = 0;
@@ -113,7 +122,7 @@ class StateReader {
   }
   template <PlainData T>
   void read(T& value) {
-    std::memcpy(reinterpret_cast<char*>(&value), take(sizeof(T)), sizeof(T));
+    take_into(&value, sizeof(T));
   }
   template <class T, int R, int C, int O, int MR, int MC>
     requires(R == Eigen::Dynamic || C == Eigen::Dynamic)
@@ -125,7 +134,7 @@ class StateReader {
         (rows > 0 && static_cast<std::uint64_t>(cols) > (bytes_.size() - position_) / sizeof(T) / rows))
       throw std::runtime_error("the state holds a matrix size that does not fit");
     m.resize(rows, cols);
-    std::memcpy(reinterpret_cast<char*>(m.data()), take(sizeof(T) * m.size()), sizeof(T) * m.size());
+    take_into(m.data(), sizeof(T) * m.size());
   }
   void read(std::string& s) {
     const std::size_t n = count(1);
@@ -135,7 +144,7 @@ class StateReader {
   void read(std::vector<T>& v) {
     if constexpr (PlainData<T>) {
       v.resize(count(sizeof(T)));
-      std::memcpy(reinterpret_cast<char*>(v.data()), take(sizeof(T) * v.size()), sizeof(T) * v.size());
+      take_into(v.data(), sizeof(T) * v.size());
     } else {
       v.resize(count(1));
       for (T& e : v) read(e);

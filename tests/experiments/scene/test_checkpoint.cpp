@@ -58,6 +58,22 @@ TEST(StateArchive, WhatIsWrittenIsReadBackBitForBit) {
   EXPECT_EQ(n, 42);
 }
 
+// A rigid scene's model has no vertices: empty matrices and vectors, whose data() is null,
+// must pass through (the sanitizers flagged memcpy from a null pointer before).
+TEST(StateArchive, EmptyMatricesAndVectorsAreReadBackEmpty) {
+  xpbd::StateWriter out;
+  out(xpbd::Positions(0, 3), std::vector<Plain>{}, std::vector<double>{});
+  xpbd::Positions x(2, 3);
+  std::vector<Plain> plain(1);
+  std::vector<double> values(4);
+  xpbd::StateReader in(out.bytes());
+  in(x, plain, values);
+  EXPECT_TRUE(in.at_end());
+  EXPECT_EQ(x.rows(), 0);
+  EXPECT_TRUE(plain.empty());
+  EXPECT_TRUE(values.empty());
+}
+
 TEST(StateArchive, BytesThatEndEarlyOrClaimTooMuchAreRefused) {
   xpbd::StateWriter out;
   out(std::vector<double>{1.0, 2.0, 3.0});
