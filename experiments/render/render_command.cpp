@@ -98,7 +98,7 @@ void add_mesh_files(shading::RenderScene& scene, const RenderCommandSettings& s,
 /// What every image of one command shares, made once.
 struct RenderInputs {
   std::vector<std::filesystem::path> files, frames;
-  RunVariants variants;
+  std::shared_ptr<const RunVariants> variants;
   std::vector<ColliderDrawing> colliders;
   double fps = 30.0;  ///< the run's
   std::vector<shading::Material> materials;
@@ -155,7 +155,7 @@ void render_image(const RenderCommandSettings& s, const RenderInputs& in, int k,
   shading::RenderScene scene;
   std::vector<Eigen::AlignedBox3d> grain_boxes;
   if (!s.run.empty()) {
-    totals.own_meshes = add_run_grains(scene, s.run, in.variants, in.frames[k], grain_boxes, s.soft);
+    totals.own_meshes = add_run_grains(scene, s.run, *in.variants, in.frames[k], grain_boxes, s.soft);
   } else {
     add_mesh_files(scene, s, in.files, grain_boxes);
   }
@@ -253,6 +253,8 @@ void validate(const RenderCommandSettings& s) {
                                 "--run (a scene run's output folder)");
   for (const auto& f : files)
     if (!std::filesystem::is_regular_file(f)) throw std::invalid_argument("render: " + f.string() + ": no such file");
+  if (s.variants && s.variants->shading_radius != s.shading_radius)
+    throw std::invalid_argument("render: the variants given were smoothed over another shading radius");
   if (!s.run.empty()) {
     for (const char* name : {"grains.csv", "variants", "frames"})
       if (!std::filesystem::exists(s.run / name))
@@ -292,7 +294,8 @@ RenderOutcome render_command(const RenderCommandSettings& settings, const std::f
   inputs.files = mesh_files(settings.meshes);
   if (!settings.run.empty()) {
     inputs.frames = frames_to_render(settings);
-    inputs.variants = read_run_variants(settings.run, settings.shading_radius);
+    inputs.variants = settings.variants ? settings.variants : std::make_shared<const RunVariants>(
+                                                                  read_run_variants(settings.run, settings.shading_radius));
     inputs.colliders = read_collider_drawings(settings.run);
     inputs.fps = run_fps(settings.run);
   }

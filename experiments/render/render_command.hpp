@@ -15,6 +15,7 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -66,6 +67,9 @@ struct RenderCommandSettings {
   bool video = false;  ///< with every_frame: render.mp4 at the run's frame rate and contact_sheet.png (io/video.hpp)
   SoftGrainDrawing soft;  ///< how a soft run's grains are drawn
   double shading_radius = kShadingRadius;  ///< [m] grains' normals and curvature smoothed over it (scene_pieces.hpp)
+  /// The run's variants, read once by a caller that renders one run many times (a study); null:
+  /// read here. Their curvature is smoothed over their own shading_radius, which must match.
+  std::shared_ptr<const RunVariants> variants;
 };
 
 /// Throws std::invalid_argument naming the setting that is out of range or the file missing.

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <string>
 
 #include "experiments/io/atomic_file.hpp"
@@ -190,9 +191,12 @@ SceneResult run_scene_command(const std::filesystem::path& scene_file, const std
   if (scene.render && options.render) {
     const auto start = std::chrono::steady_clock::now();
     RenderCommandSettings settings = scene_render_settings(*scene.render, scene, folder);
+    const bool every_frame = scene.render->every_frame || scene.render->video;
+    if (every_frame)  // two renders of one run: the variants' curvature smoothed once
+      settings.variants = std::make_shared<const RunVariants>(read_run_variants(folder, settings.shading_radius));
     render_command(settings, folder / "render");
     result.render_seconds = seconds_since(start);
-    if (scene.render->every_frame || scene.render->video) {  // framed on what any frame shows
+    if (every_frame) {  // framed on what any frame shows
       settings.every_frame = true;
       settings.video = scene.render->video;
       render_command(settings, folder / "render_frames");

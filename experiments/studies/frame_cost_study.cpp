@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -35,10 +36,11 @@ shading::PixelWindow centre_window(const FrameCostStudySettings& s) {
   return {x0, y0, x0 + s.window_width, y0 + s.window_height};
 }
 
-WindowResult render_window(const FrameCostStudySettings& s, const WindowRender& r,
-                           const std::filesystem::path& folder) {
+WindowResult render_window(const FrameCostStudySettings& s, const std::shared_ptr<const RunVariants>& variants,
+                           const WindowRender& r, const std::filesystem::path& folder) {
   RenderCommandSettings c;
   c.run = s.run;
+  c.variants = variants;
   c.frame = s.frame;
   c.integrator = r.integrator;
   c.bounces = r.bounces;
@@ -99,11 +101,13 @@ void frame_cost_study_command(const FrameCostStudySettings& s, const std::filesy
   const double frame_pixels = static_cast<double>(s.width) * s.height;
   const double window_pixels = static_cast<double>(s.window_width) * s.window_height;
   CsvTable table({"role", "integrator", "bounces", "sampler", "spp", "seconds", "relative_rmse", "frame_seconds"});
+  // Every render is of the same run: its variants' curvature is smoothed once, not per render.
+  const auto variants = std::make_shared<const RunVariants>(read_run_variants(s.run));
   const WindowResult reference =
-      render_window(s, {"reference", s.integrator, s.bounces, shading::SamplerKind::kSobol, s.reference_spp}, folder);
+      render_window(s, variants, {"reference", s.integrator, s.bounces, shading::SamplerKind::kSobol, s.reference_spp}, folder);
   const double mean = shading::mean_radiance(reference.image);
   const auto measure = [&](const WindowRender& r) {
-    const WindowResult result = render_window(s, r, folder);
+    const WindowResult result = render_window(s, variants, r, folder);
     const double error = shading::rms_difference(result.image, reference.image) / mean;
     const double frame_seconds = result.seconds * frame_pixels / window_pixels;
     table.add_row({r.role, integrator_name(r.integrator), cell(r.bounces), sampler_name(r.sampler), cell(r.spp),
