@@ -96,10 +96,15 @@ std::vector<ContactSolver::BodyPair> ContactSolver::body_candidates(const std::v
                                                                     const std::vector<double>& pad) {
   // Candidate sphere pairs of each body pair: spheres that reach the other body's box, paired
   // when their gap is within reach (a grain's 20–60 spheres make 400–3600 pairs, of which a
-  // touching neighbour needs a few dozen).
+  // touching neighbour needs a few dozen). The body pairs in chunks of a fixed size, in
+  // parallel, each into its own lists, joined in order: the same lists on any thread count
+  // (it was 28% of a 10,000-grain rigid run, on one core).
+  constexpr int kChunk = 256, kWave = 16;
+  struct Found {
+    std::vector<std::array<int, 2>> spheres;
+    std::vector<BodyPair> bodies;  ///< first and last index into `spheres`
+  };
   const auto& bodies = model_.bodies;
-  std::vector<BodyPair> found;
-  std::vector<int> near_a, near_b;
   const auto spheres_near = [&](int body, const Box& other, double reach, std::vector<int>& near) {
     near.clear();
     for (int s = 0; s < bodies[body].sphere_count(); ++s) {
@@ -107,20 +112,47 @@ std::vector<ContactSolver::BodyPair> ContactSolver::body_candidates(const std::v
       if ((c - c.cwiseMax(other.lower).cwiseMin(other.upper)).norm() - radius(body, s) < reach) near.push_back(s);
     }
   };
-  for (const auto& [a, b] : pairs) {
-    if (bodies[a].asleep && bodies[b].asleep) continue;  // sleeping bodies do not touch each other
-    const double reach = pad[a] + pad[b];
-    spheres_near(a, start_box_[b], reach, near_a);
-    if (near_a.empty()) continue;
-    spheres_near(b, start_box_[a], reach, near_b);
-    const int first = static_cast<int>(sphere_pairs_.size());
-    for (const int sa : near_a)
-      for (const int sb : near_b) {
-        const Vec3 d = centre_now_[sphere_offset_[a] + sa] - centre_now_[sphere_offset_[b] + sb];
-        if (d.norm() - radius(a, sa) - radius(b, sb) < reach) sphere_pairs_.push_back({sa, sb});
-      }
-    const int last = static_cast<int>(sphere_pairs_.size());
-    if (last > first) found.push_back({a, b, first, last});
+  const auto find_in = [&](int chunk, Found& out) {
+    std::vector<int> near_a, near_b;
+    const size_t end = std::min(pairs.size(), static_cast<size_t>(chunk + 1) * kChunk);
+    for (size_t k = static_cast<size_t>(chunk) * kChunk; k < end; ++k) {
+      const auto [a, b] = pairs[k];
+      if (bodies[a].asleep && bodies[b].asleep) continue;  // sleeping bodies do not touch each other
+      const double reach = pad[a] + pad[b];
+      spheres_near(a, start_box_[b], reach, near_a);
+      if (near_a.empty()) continue;
+      spheres_near(b, start_box_[a], reach, near_b);
+      const int first = static_cast<int>(out.spheres.size());
+      for (const int sa : near_a)
+        for (const int sb : near_b) {
+          const Vec3 d = centre_now_[sphere_offset_[a] + sa] - centre_now_[sphere_offset_[b] + sb];
+          if (d.norm() - radius(a, sa) - radius(b, sb) < reach) out.spheres.push_back({sa, sb});
+        }
+      const int last = static_cast<int>(out.spheres.size());
+      if (last > first) out.bodies.push_back({a, b, first, last});
+    }
+  };
+  // A wave of chunks at a time: the lists a wave holds before they are joined stay small (all
+  // chunks at once held a second copy of the sphere pairs: 475 -> 655 MiB at 3000 grains).
+  std::vector<Found> wave(kWave);
+  std::vector<BodyPair> found;
+  const int chunks = static_cast<int>((pairs.size() + kChunk - 1) / kChunk);
+  for (int first = 0; first < chunks; first += kWave) {
+    const int count = std::min(kWave, chunks - first);
+    const auto find_chunk = [&](int c) {
+      wave[c].spheres.clear();
+      wave[c].bodies.clear();
+      find_in(first + c, wave[c]);
+    };
+    if (parallel_)
+      tbb::parallel_for(0, count, find_chunk);
+    else
+      for (int c = 0; c < count; ++c) find_chunk(c);
+    for (int c = 0; c < count; ++c) {
+      const int offset = static_cast<int>(sphere_pairs_.size());
+      for (BodyPair p : wave[c].bodies) found.push_back({p.a, p.b, p.first + offset, p.last + offset});
+      sphere_pairs_.insert(sphere_pairs_.end(), wave[c].spheres.begin(), wave[c].spheres.end());
+    }
   }
   return found;
 }
