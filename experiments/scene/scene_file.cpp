@@ -27,21 +27,46 @@ toml::table parse_toml(std::string_view text, const std::string& source) {
   }
 }
 
-/// Applies "section.key=value" to the document.
+/// The table "colliders.N.key" names (N from 1, as messages number them), and its key.
+std::pair<toml::table*, std::string> collider_override_target(toml::table& document, const std::string& path,
+                                                              const std::string& source) {
+  const size_t dot = path.find('.');
+  toml::array* colliders = document["colliders"].as_array();
+  const int count = colliders ? static_cast<int>(colliders->size()) : 0;
+  int n = 0;
+  try {
+    size_t used = 0;
+    n = dot == std::string::npos ? 0 : std::stoi(path.substr(0, dot), &used);
+    if (used != dot) n = 0;
+  } catch (const std::logic_error&) {
+  }
+  if (n < 1 || n > count)
+    throw SceneError(source + ": expected colliders.N.key=value with N in [1, " + std::to_string(count) +
+                     "], the scene's [[colliders]] in order");
+  return {(*colliders)[n - 1].as_table(), path.substr(dot + 1)};
+}
+
+/// Applies "section.key=value" or "colliders.N.key=value" to the document.
 void apply_override(toml::table& document, const std::string& assignment) {
   const std::string source = "--set " + assignment;
   const size_t equals = assignment.find('='), dot = assignment.find('.');
   if (equals == std::string::npos || dot == std::string::npos || dot > equals)
     throw SceneError(source + ": expected section.key=value");
   const std::string section = assignment.substr(0, dot), key = assignment.substr(dot + 1, equals - dot - 1);
-  if (std::find(kSections.begin(), kSections.end(), section) == kSections.end())
-    throw SceneError(source + ": there is no section " + in_quotes(section) + "; sections: " + joined(kSections));
   toml::table value = parse_toml("v = " + assignment.substr(equals + 1), source);
+  toml::node& node = *value.get("v");
+  const toml::source_region region = node.source();  // "--set ...", line 1, in messages
+  if (section == "colliders") {
+    auto [collider, collider_key] = collider_override_target(document, key, source);
+    collider->insert_or_assign(toml::key(collider_key, region), std::move(node));
+    return;
+  }
+  if (std::find(kSections.begin(), kSections.end(), section) == kSections.end())
+    throw SceneError(source + ": there is no section " + in_quotes(section) + "; sections: " + joined(kSections) +
+                     ", or colliders.N");
   toml::node* existing = document.get(section);
   if (existing && !existing->is_table()) throw SceneError(source + ": " + in_quotes(section) + " is not a section");
   if (!existing) existing = &document.insert_or_assign(section, toml::table{}).first->second;
-  toml::node& node = *value.get("v");
-  const toml::source_region region = node.source();  // "--set ...", line 1, in messages
   existing->as_table()->insert_or_assign(toml::key(key, region), std::move(node));
 }
 

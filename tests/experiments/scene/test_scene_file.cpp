@@ -308,6 +308,19 @@ TEST(SceneFile, OverridesReplaceOrAddKeysAndAreCheckedTheSameWay) {
   EXPECT_TRUE(error_of("", {"grain.count=40"}).starts_with("--set grain.count=40: there is no section 'grain'"));
 }
 
+TEST(SceneFile, OverridesReachACollidersKeysByItsNumber) {
+  const std::string two_boxes = "[[colliders]]\nshape = \"box\"\nhalf_extents_m = [0.01, 0.01, 0.01]\n"
+                                "[[colliders]]\nshape = \"box\"\nhalf_extents_m = [0.02, 0.02, 0.02]\n";
+  const Scene scene = parse_scene(two_boxes, "s.toml", {"colliders.2.removed_at_s=3"});
+  ASSERT_EQ(scene.colliders.size(), 2u);
+  EXPECT_EQ(scene.colliders[0].removal_time, INFINITY);
+  EXPECT_EQ(scene.colliders[1].removal_time, 3.0);
+  EXPECT_TRUE(error_of(two_boxes, {"colliders.3.removed_at_s=3"})
+                  .starts_with("--set colliders.3.removed_at_s=3: expected colliders.N.key=value with N in [1, 2]"));
+  EXPECT_TRUE(error_of(two_boxes, {"colliders.x.removed_at_s=3"}).find("with N in [1, 2]") != std::string::npos);
+  EXPECT_TRUE(error_of(two_boxes, {"colliders.1.colour=3"}).find("has no key 'colour'") != std::string::npos);
+}
+
 TEST(SceneFile, RunWritesTheRunWithItsSceneAndABadSceneWritesNothing) {
   const std::filesystem::path out = std::filesystem::path(RICE_TEST_SCRATCH) / "scene-run";
   std::filesystem::remove_all(out);
