@@ -124,7 +124,7 @@ std::vector<ReproduceStep> solver_and_grain_steps(const std::filesystem::path& s
 }
 
 /// The shading fits, the paper's scenes (figure 10, table 1), the pressed clump, the rice
-/// cooker and the scale study.
+/// cooker, the full-size chawan, the hard cases and the scale study.
 std::vector<ReproduceStep> shading_fit_and_scene_steps(const std::filesystem::path& out, bool full,
                                                        const std::filesystem::path& scenes) {
   return {
@@ -158,6 +158,18 @@ std::vector<ReproduceStep> shading_fit_and_scene_steps(const std::filesystem::pa
        "rice-cooker",
        "",
        {scenes / "rice_cooker.toml", scenes / "meshes"}},
+      {"A real serving: 3000 soft grains heaped in a chawan 12 cm across",
+       {"run", (scenes / "chawan_serving.toml").string()},
+       "chawan-serving",
+       "",
+       {scenes / "chawan_serving.toml"}},
+      {"Hard cases: the bunny pressed to 80% and released, a clump dropped into the cooker (a tenth; all with --full)",
+       full ? std::vector<std::string>{"study", "hard-cases", "--scenes", scenes.string()}
+            : std::vector<std::string>{"study", "hard-cases", "--scenes", scenes.string(), "--bunny-grains", "360",
+                                       "--cooker-grains", "3400"},
+       "hard-cases",
+       "",
+       {scenes / "cases", scenes / "meshes"}},
       {"Scale: time and memory per grain for clumps of 100 to 3000 grains (to 34,000 with --full)",
        full ? std::vector<std::string>{"study", "scale", "--scene", (scenes / "drop.toml").string()}
             : std::vector<std::string>{"study", "scale", "--scene", (scenes / "drop.toml").string(), "--counts", "100",

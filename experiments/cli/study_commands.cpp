@@ -9,6 +9,7 @@
 #include "experiments/studies/frame_cost_study.hpp"
 #include "experiments/studies/convergence_study.hpp"
 #include "experiments/studies/grain_substep_study.hpp"
+#include "experiments/studies/hard_cases_study.hpp"
 #include "experiments/studies/oscillator_study.hpp"
 #include "experiments/studies/pour_substep_study.hpp"
 #include "experiments/studies/path_depth_study.hpp"
@@ -45,6 +46,7 @@ class StudyCommands : public CommandFamily {
     add_convergence(study);
     add_scene_convergence(study);
     add_scale(study);
+    add_hard_cases(study);
   }
 
  private:
@@ -418,6 +420,35 @@ class StudyCommands : public CommandFamily {
     return settings;
   }
 
+  void add_hard_cases(CLI::App* study) {
+    CLI::App* c = study->add_subcommand(
+        "hard-cases", "soft grains at scale: the bunny pressed to 80% and released, 34,000 dropped into the cooker");
+    HardCasesStudySettings& s = hard_cases_;
+    c->add_option("--out", hard_cases_out_, "output folder")->capture_default_str();
+    c->add_flag("--quick", hard_cases_quick_, "40 grains a case, a 1 s fill, 45 frames of drop, for CI (a minute)");
+    c->add_option("--scenes", s.scenes, "the folder holding cases/bunny_pressed.toml and cases/cooker_drop.toml")
+        ->capture_default_str();
+    c->add_option("--bunny-grains", s.bunny_grains, "grains in the bunny")->check(number_in(1, 1e5))
+        ->capture_default_str();
+    c->add_option("--cooker-grains", s.cooker_grains, "grains dropped into the cooker")->check(number_in(1, 1e5))
+        ->capture_default_str();
+    c->add_option("--run-threads", s.threads, "threads of each run; 0: the machine's")->check(number_in(0, 1024));
+    add(c, [this] { experiments::validate(hard_cases_settings()); },
+        [this] {
+          if (!hard_cases_study_command(hard_cases_settings(), hard_cases_out_))
+            throw std::runtime_error("hard-cases: a case failed its checks (" + hard_cases_out_ + "/hard_cases.csv)");
+        });
+  }
+
+  /// --quick's settings, with the folder and threads given.
+  HardCasesStudySettings hard_cases_settings() const {
+    if (!hard_cases_quick_) return hard_cases_;
+    HardCasesStudySettings settings = HardCasesStudySettings::quick();
+    settings.scenes = hard_cases_.scenes;
+    settings.threads = hard_cases_.threads;
+    return settings;
+  }
+
   /// --quick's settings, then the options given.
   ConvergenceSettings convergence_settings() const {
     ConvergenceSettings settings = convergence_quick_ ? ConvergenceSettings::quick() : ConvergenceSettings{};
@@ -471,6 +502,9 @@ class StudyCommands : public CommandFamily {
   std::string scale_out_ = "out/scale";
   bool scale_quick_ = false;
   CLI::Option *scale_counts_ = nullptr, *scale_frames_ = nullptr;
+  HardCasesStudySettings hard_cases_;
+  std::string hard_cases_out_ = "out/hard_cases";
+  bool hard_cases_quick_ = false;
 };
 
 }  // namespace

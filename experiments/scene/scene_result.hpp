@@ -12,6 +12,9 @@ struct SceneResult {
   int awake = 0;                    ///< grains awake at the end
   double kinetic_energy = 0.0;      ///< of every grain at the end [J]
   xpbd::Penetration penetration;    ///< the deepest overlaps at the end
+  bool finite = true;               ///< every position and velocity finite at the end (model_health.hpp)
+  int inverted_tets = 0;            ///< soft tets with det F ≤ 0 at the end
+  double grain_thickness = 0.0;     ///< the thinnest variant's thickness T [m]: overlaps are judged against it
   /// On a plate: the heap's angle of repose [°] and its apex above the lowest centre [m]; NaN
   /// in a bowl or for grains scattered one deep.
   double angle_of_repose_degrees = 0.0, heap_height = 0.0;

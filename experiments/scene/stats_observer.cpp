@@ -6,6 +6,7 @@
 
 #include "experiments/io/atomic_file.hpp"
 #include "xpbd/energy.hpp"
+#include "xpbd/model_health.hpp"
 
 namespace rice::experiments {
 namespace {
@@ -44,12 +45,18 @@ void StatsObserver::end(const World& world, const Stepper& stepper, SceneReport&
   r.awake = static_cast<int>(awake_grains(world));
   r.kinetic_energy = xpbd::kinetic_energy(world.model);
   r.penetration = xpbd::deepest_penetration(world.model, stepper.time());
+  r.finite = xpbd::state_finite(world.model);
+  r.inverted_tets = xpbd::inverted_tets(world.model);
+  r.grain_thickness = world.grain_thickness;
   const bool removed = std::isfinite(first_removal_);
   r.top_before_removal = removed ? top_before_removal_ : std::numeric_limits<double>::quiet_NaN();
   report.info.push_back({"awake_at_end", cell(r.awake)});
   report.info.push_back({"top_centre_before_removal_m", removed ? cell(r.top_before_removal) : "n/a"});
   report.info.push_back({"penetration_between_grains_at_end_m", cell(r.penetration.between_bodies)});
   report.info.push_back({"penetration_into_container_at_end_m", cell(r.penetration.into_colliders)});
+  report.info.push_back({"grain_thickness_m", cell(r.grain_thickness)});
+  report.info.push_back({"state_finite_at_end", r.finite ? "yes" : "no"});
+  report.info.push_back({"inverted_tets_at_end", world.model.neo_hookean.empty() ? "n/a" : cell(r.inverted_tets)});
 }
 
 void StatsObserver::save_state(xpbd::StateWriter& out) const { out(stats_.rows(), top_before_removal_); }

@@ -34,6 +34,8 @@ struct World {
   std::vector<xpbd::Quat> initial_orientation;  ///< the rigid bodies' q at the start
   /// The largest grain's length: its box's diagonal at the largest swell [m].
   double grain_length = 0.0;
+  /// The thinnest variant's thickness T, its extent along z, unswollen [m].
+  double grain_thickness = 0.0;
   int parking_row = 1;            ///< grains per row of parking places (an emitter's layer)
   grains::ChawanShape bowl;       ///< the chawan's sizes (also given on a plate: the plots use its rim)
   int first_mesh_collider = 1;    ///< model.colliders index of the scene's first mesh collider

@@ -36,6 +36,8 @@ void make_grains(const SceneGrains& settings, const grains::GrainRecipe& recipe,
   for (const GrainVariant& v : world.variants) {
     const grains::Vertices& V = v.grain.simulation.V;
     world.grain_length = std::max(world.grain_length, (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm());
+    const double thickness = V.col(2).maxCoeff() - V.col(2).minCoeff();  // grains are made thickness along z
+    world.grain_thickness = world.grain_thickness > 0.0 ? std::min(world.grain_thickness, thickness) : thickness;
   }
   world.grain_length *= recipe.cultivar.swell_max;
 }

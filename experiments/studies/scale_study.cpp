@@ -6,12 +6,11 @@
 #include <stdexcept>
 
 #include "experiments/io/atomic_file.hpp"
-#include "experiments/io/child_process.hpp"
 #include "experiments/io/csv_table.hpp"
 #include "experiments/io/gnuplot.hpp"
-#include "experiments/io/interrupt.hpp"
 #include "experiments/io/numeric_csv.hpp"
 #include "experiments/io/run_info.hpp"
+#include "experiments/studies/scene_child_run.hpp"
 
 namespace rice::experiments {
 namespace {
@@ -22,38 +21,19 @@ struct ScaleRun {
   double peak_mib = 0.0, contacts = 0.0, awake = 0.0;
 };
 
-/// `rice run` of the scene (a clump) with `count` `body` grains, in a process of its own.
-std::vector<std::string> run_arguments(const ScaleStudySettings& s, const std::string& body, int count,
-                                       const std::filesystem::path& out) {
-  std::vector<std::string> argv{std::filesystem::read_symlink("/proc/self/exe").string()};
-  if (s.threads > 0) argv.insert(argv.end(), {"--threads", std::to_string(s.threads)});
-  argv.insert(argv.end(), {"run", std::filesystem::absolute(s.scene).string(), "--no-render", "--out", out.string()});
-  for (const std::string& set :
-       {"grains.count=" + std::to_string(count), "grains.body=\"" + body + "\"",
-        "solver.frames=" + std::to_string(s.frames),
-        "emitter.radius_m=" + cell(clump_radius(count))})
-    argv.insert(argv.end(), {"--set", set});
-  return argv;
-}
-
-/// A number of the run's run_info.txt; throws std::runtime_error naming the file when missing.
-double info_number(const std::filesystem::path& run, const std::string& key) {
-  const std::string value = run_info_value(run / "run_info.txt", key);
-  if (value.empty()) throw std::runtime_error((run / "run_info.txt").string() + ": no " + key);
-  return std::stod(value);
-}
-
 ScaleRun measure_run(const ScaleStudySettings& s, const std::string& body, int count,
                      const std::filesystem::path& out) {
-  const ProgramRun child = run_program(out.parent_path(), run_arguments(s, body, count, out));
-  stop_point();
-  if (!child.succeeded) throw std::runtime_error("scale: the run of " + std::to_string(count) + " " + body +
-                                                 " grains failed: " + child.err);
+  const SceneChildRun run{s.scene,
+                          {"grains.count=" + std::to_string(count), "grains.body=\"" + body + "\"",
+                           "solver.frames=" + std::to_string(s.frames), "emitter.radius_m=" + cell(clump_radius(count))},
+                          s.threads};
+  run_scene_child(run, out, "scale: the run of " + std::to_string(count) + " " + body + " grains");
   const NumericCsv stats = read_numeric_csv(out / "stats.csv");
-  const std::vector<double>& last = stats.rows.back();
+  double contacts = 0.0;  // the mean over the frames: the last alone is one moment of a settling pile
+  for (const std::vector<double>& row : stats.rows) contacts += row[stats.column("contacts")] / stats.rows.size();
   return {info_number(out, "simulation_wall_s"), info_number(out, "broad_phase_s"), info_number(out, "narrow_phase_s"),
           info_number(out, "solve_s"), info_number(out, "sleeping_s"), info_number(out, "peak_memory_mib"),
-          last[stats.column("contacts")], last[stats.column("awake")]};
+          contacts, stats.rows.back()[stats.column("awake")]};
 }
 
 void plot_scale(const std::filesystem::path& folder) {

@@ -6,7 +6,7 @@
 // resident memory is its own. From its run_info.txt and stats.csv:
 //  - the wall time per grain-frame, split into broad phase, narrow phase, solves and sleeping;
 //  - the peak resident memory, and per grain the growth over the smallest run's;
-//  - contacts per grain and grains awake at the end.
+//  - contacts per grain (the mean over the frames) and grains awake at the end.
 // Writes scale.csv (a row per run), scale.png (time per grain-frame against grains, log–log)
 // and run_info.txt; each run's folder holds its scene run.
 #pragma once

@@ -4,7 +4,8 @@ corners: onigiri_mould.obj (a rounded equilateral triangle, paper Fig. 16) and s
 (a rounded oblong, Fig. 14), each standing on z = 0 in metres, and onigiri_lid.obj and
 shari_lid.obj, 1 cm thick, the same outline 2 mm in from the mould's walls (a lid as wide as
 the mould would wedge grains between itself and the walls); drop_cup.obj; and the rice cooker's
-pot, rice_cooker_pot.obj (a cylinder's room 20 cm across), and its paddle's blade, shamoji.obj.
+pot, rice_cooker_pot.obj (a cylinder's room 20 cm across), the same pot 1.5 m tall as a chute,
+rice_cooker_chute.obj, and the paddle's blade, shamoji.obj.
 Rerun after changing a size:
     python3 experiments/scenes/meshes/make_moulds.py
 """
@@ -83,6 +84,9 @@ def circle(radius, segments=64):
 
 # Rice cooker: the inner pot of a 5.5-cup cooker, 20 cm across and 12 cm deep (the room inside).
 write_prism(here / "rice_cooker_pot.obj", circle(0.1), 0.12)
+# The same pot with its wall carried up to 1.5 m, a chute that holds a clump of 34,000 grains
+# stacked on the clump's lattice before it drops (scenes/cases/cooker_drop.toml).
+write_prism(here / "rice_cooker_chute.obj", circle(0.1), 1.5)
 # Shamoji (rice paddle): its blade, a rounded oblong 9 x 7 cm and 6 mm thick, lying in z = 0..0.006;
 # the scene turns and moves it.
 write_prism(here / "shamoji.obj", rounded_outline(oblong(0.09, 0.07), 0.03), 0.006)
