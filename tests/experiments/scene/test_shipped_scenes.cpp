@@ -28,7 +28,7 @@ TEST(ShippedScenes, EachRunsAFrameAsItShips) {
     }) << entry.path();
     EXPECT_TRUE(fs::exists(out / "stats.csv")) << entry.path();
   }
-  EXPECT_EQ(scenes, 9);
+  EXPECT_EQ(scenes, 10);
 }
 
 }  // namespace
