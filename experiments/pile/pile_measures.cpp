@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "xpbd/penetration.hpp"
@@ -19,6 +20,15 @@ double footprint_radius(const std::vector<xpbd::Vec3>& centres, double fraction)
   std::sort(radii.begin(), radii.end());
   const auto k = static_cast<size_t>(std::ceil(fraction * static_cast<double>(radii.size()))) - 1;
   return radii[std::min(k, radii.size() - 1)];
+}
+
+double pile_top(const std::vector<xpbd::Vec3>& centres, double fraction) {
+  if (centres.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> heights;
+  for (const xpbd::Vec3& c : centres) heights.push_back(c.z());
+  std::sort(heights.begin(), heights.end());
+  const auto k = static_cast<size_t>(std::ceil(fraction * static_cast<double>(heights.size()))) - 1;
+  return heights[std::min(k, heights.size() - 1)];
 }
 
 int count_clusters(const xpbd::Model& model, double gap) {

@@ -26,8 +26,8 @@ struct SceneResult {
   /// (a mould taken away; NaN when none is removed): whether the shape stands.
   double top = 0.0, top_before_removal = 0.0;
   /// A mould's fill or the chawan (paper Fig. 16 b, Fig. 15): the pile cut half way from the
-  /// room's floor to the top centre (section.png), and the share of the room there that grains
-  /// cover.
+  /// room's floor to the pile's top (pile_measures.hpp) (section.png), and the share of the room
+  /// there that grains cover.
   double section_height = 0.0, packing_fraction = 0.0;
   /// Grains in the mould's room or within the bowl's rim at the end (-1: a plate).
   int in_container = -1;

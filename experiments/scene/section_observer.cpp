@@ -1,12 +1,12 @@
 // The pile's section and packing; see section_observer.hpp.
 #include "experiments/scene/section_observer.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "experiments/io/csv_table.hpp"
 #include "experiments/io/png_image.hpp"
+#include "experiments/pile/pile_measures.hpp"
 #include "experiments/pile/pile_section.hpp"
 
 namespace rice::experiments {
@@ -16,16 +16,6 @@ namespace {
 double room_at(const xpbd::Collider& room, const xpbd::Vec3& p) {
   const xpbd::ColliderKeyframe pose = room_pose(room);
   return xpbd::posed_signed_distance(room, pose, xpbd::to_local(pose, p)).distance;
-}
-
-/// The pile's top: the 95th percentile of the heights of the centres in the room, so that a
-/// few grains lifted above the pile (the rice cooker's paddle lifting a portion) do not set it.
-double pile_top(const World& world, const std::vector<int>& inside) {
-  std::vector<double> heights;
-  for (int g : inside) heights.push_back(world.centre(g).z());
-  const auto k = heights.begin() + static_cast<std::ptrdiff_t>(0.95 * static_cast<double>(heights.size() - 1));
-  std::nth_element(heights.begin(), k, heights.end());
-  return *k;
 }
 
 }  // namespace
@@ -47,7 +37,9 @@ int SectionObserver::room_collider(const World& world) const {
 void SectionObserver::cut(const World& world, const xpbd::Collider& room, const std::vector<int>& inside,
                           SceneResult& result) const {
   const double floor = fill_ ? 0.0 : world.bowl.height - world.bowl.inner_depth;
-  result.section_height = 0.5 * (floor + pile_top(world, inside));
+  std::vector<xpbd::Vec3> centres;
+  for (int g : inside) centres.push_back(world.centre(g));
+  result.section_height = 0.5 * (floor + pile_top(centres));
   // One render mesh at a time (~0.9 MB a grain): all of them at once were most of a run's peak
   // memory (720 of 790 MiB for 800 grains). The first pass finds the picture's bounds and the
   // grains the cut crosses, the second cuts those, made again.

@@ -1,7 +1,8 @@
 // The pile cut half way up, in a container with a room (paper Fig. 16 b, a mould's fill; Fig.
 // 15, the chawan): which grains are in it (in the mould's room, or within the bowl's rim; those
 // that fell out, maybe far, stay out of the picture), the cut through their render meshes
-// half way from the room's floor to the top centre (section.png), and the packing fraction:
+// half way from the room's floor to the pile's top (pile_top: a few grains lifted above the
+// pile do not set it) (section.png), and the packing fraction:
 // the share of the room in that plane that grains cover (the room: the pixels outside the
 // container's solid that connect to the one under the grains' mean centre). On a plate there
 // is no room, and every figure is n/a.

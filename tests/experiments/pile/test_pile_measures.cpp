@@ -23,6 +23,18 @@ TEST(PileMeasures, FootprintRadiusHoldsTheFractionOfCentresAboutTheirMean) {
   EXPECT_EQ(footprint_radius({}), 0.0);
 }
 
+// The rice cooker's section was cut half way to its highest grain, one the paddle lifted 11 cm
+// up over a 1.6 cm layer, and showed no grain.
+TEST(PileMeasures, APilesTopIsNotSetByAFewGrainsLiftedAboveIt) {
+  std::vector<xpbd::Vec3> centres;
+  for (int k = 0; k < 100; ++k) centres.emplace_back(0.0, 0.0, 0.016 * k / 99.0);  // a layer 1.6 cm deep
+  for (int k = 0; k < 3; ++k) centres.emplace_back(0.0, 0.0, 0.11);               // three on the paddle
+  EXPECT_LT(pile_top(centres), 0.016);
+  EXPECT_GT(pile_top(centres), 0.014);
+  EXPECT_EQ(pile_top(centres, 1.0), 0.11);
+  EXPECT_TRUE(std::isnan(pile_top({})));
+}
+
 TEST(PileMeasures, ClustersAreTheGroupsOfGrainsWhoseSpheresTouch) {
   // Three grain-sized bodies in a row 50 µm apart and a fourth far away: two groups at a gap
   // of 0.1 mm, four at 10 µm.
