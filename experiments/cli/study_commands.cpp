@@ -432,6 +432,10 @@ class StudyCommands : public CommandFamily {
         ->capture_default_str();
     c->add_option("--cooker-grains", s.cooker_grains, "grains dropped into the cooker")->check(number_in(1, 1e5))
         ->capture_default_str();
+    c->add_option("--fill-seconds", s.fill_seconds, "the bunny's fill [s]; the press starts 0.5 s after")
+        ->check(number_in(0, 60, Ends::kOpenLow))->capture_default_str();
+    c->add_option("--pressed-fraction", s.pressed_fraction, "the lid's bottom at this fraction of the settled height")
+        ->check(number_in(0, 1, Ends::kOpenLow))->capture_default_str();
     c->add_option("--run-threads", s.threads, "threads of each run; 0: the machine's")->check(number_in(0, 1024));
     add(c, [this] { experiments::validate(hard_cases_settings()); },
         [this] {

@@ -137,8 +137,8 @@ void validate(const HardCasesStudySettings& s) {
     throw std::invalid_argument("the grain counts and frames must be positive");
   if (!(s.fill_seconds > 0.0 && s.fill_seconds <= 60.0))
     throw std::invalid_argument("--fill-seconds must be in (0, 60]");
-  if (!(s.pressed_fraction > 0.0 && s.pressed_fraction < 1.0))
-    throw std::invalid_argument("--pressed-fraction must be in (0, 1)");
+  if (!(s.pressed_fraction > 0.0 && s.pressed_fraction <= 1.0))
+    throw std::invalid_argument("--pressed-fraction must be in (0, 1]");
 }
 
 bool hard_cases_study_command(const HardCasesStudySettings& s, const std::filesystem::path& folder) {
