@@ -342,7 +342,8 @@ std::string scene_keys_markdown() {
       "(`experiments/scene/scene_keys.cpp`), and a test fails when it differs; regenerate it with "
       "`build/experiments/rice scene-keys > docs/scene-keys.md`. Every key is optional unless its default says "
       "\"required\"; a key that is not listed, a value of the wrong type or out of range stops the run before any "
-      "work, naming the file, line and key. `--set section.key=value` overrides a key.\n";
+      "work, naming the file, line and key. `--set section.key=value` overrides a key, and "
+      "`--set colliders.N.key=value` one of the N-th [[colliders]] (from 1).\n";
   for (const SceneSection& section : scene_sections()) {
     out += "\n## " + section.heading + "\n\n" + section.meaning + ".\n\n";
     out += "| key | type | default | range | meaning |\n|---|---|---|---|---|\n";
