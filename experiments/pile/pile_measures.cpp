@@ -9,6 +9,16 @@
 #include "xpbd/penetration.hpp"
 
 namespace rice::experiments {
+namespace {
+
+/// The least value under or at which `fraction` of the (non-empty) values lie.
+double value_under_fraction(std::vector<double> values, double fraction) {
+  std::sort(values.begin(), values.end());
+  const auto k = static_cast<size_t>(std::ceil(fraction * static_cast<double>(values.size()))) - 1;
+  return values[std::min(k, values.size() - 1)];
+}
+
+}  // namespace
 
 double footprint_radius(const std::vector<xpbd::Vec3>& centres, double fraction) {
   if (centres.empty()) return 0.0;
@@ -17,18 +27,14 @@ double footprint_radius(const std::vector<xpbd::Vec3>& centres, double fraction)
   mean /= static_cast<double>(centres.size());
   std::vector<double> radii;
   for (const xpbd::Vec3& c : centres) radii.push_back((c - mean).head<2>().norm());
-  std::sort(radii.begin(), radii.end());
-  const auto k = static_cast<size_t>(std::ceil(fraction * static_cast<double>(radii.size()))) - 1;
-  return radii[std::min(k, radii.size() - 1)];
+  return value_under_fraction(radii, fraction);
 }
 
 double pile_top(const std::vector<xpbd::Vec3>& centres, double fraction) {
   if (centres.empty()) return std::numeric_limits<double>::quiet_NaN();
   std::vector<double> heights;
   for (const xpbd::Vec3& c : centres) heights.push_back(c.z());
-  std::sort(heights.begin(), heights.end());
-  const auto k = static_cast<size_t>(std::ceil(fraction * static_cast<double>(heights.size()))) - 1;
-  return heights[std::min(k, heights.size() - 1)];
+  return value_under_fraction(heights, fraction);
 }
 
 int count_clusters(const xpbd::Model& model, double gap) {
