@@ -31,7 +31,7 @@ ContactSolver::ContactSolver(Model& model, bool parallel) : model_(model), paral
   centre_now_.resize(sphere_offset_.back());
   centre_start_.resize(sphere_offset_.back());
   radius_.resize(sphere_offset_.back());
-  start_box_.resize(model.bodies.size());
+  start_box_.assign(model.bodies.size(), {Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)});  // empty
   motion_.assign(model.bodies.size(), 0.0);
   centres_at_rest_.assign(model.bodies.size(), 0);
   body_of_particle_ = soft_body_of_particle(model);
@@ -670,15 +670,17 @@ void ContactSolver::update_bonds() {
 
 /// What carries over between steps: the contacts' states (anchors, sliding, the forces held
 /// in particle steps), the broad phase's sphere centres and time, the radii and their time,
-/// the centres of sleeping bodies, the collider impulses of the interval, the statistics (the
-/// deepest penetration so far) and the bonds. The broad phase's pairs are not kept, since every
-/// step starts with a broad phase (with them a 10,000-grain clump's checkpoint was 402 MB, without
-/// them 22.5 MB), and the rest is rebuilt each substep.
+/// the centres, boxes and motions of sleeping bodies (not recomputed while they sleep: a run
+/// resumed with its parked grains' boxes left empty woke them), the collider impulses of the
+/// interval, the statistics (the deepest penetration so far) and the bonds. The broad phase's
+/// pairs are not kept, since every step starts with a broad phase (with them a 10,000-grain
+/// clump's checkpoint was 402 MB, without them 22.5 MB), and the rest is rebuilt each substep.
 template <class Self, class Archive>
 void ContactSolver::transfer_state(Self& self, Archive& archive) {
   auto& s = self.statistics_;
   archive(self.collider_impulses_, self.interval_time_, self.states_, self.centre_now_, self.centre_start_,
           self.centre_at_broad_phase_, self.broad_phase_time_, self.radius_, self.radii_time_, self.centres_at_rest_,
+          self.start_box_, self.motion_,
           s.candidates, s.contacts, s.max_penetration, s.bonds, s.bonds_broken, s.collider_forces);
   bool bonds = self.bonds_.has_value();
   archive(bonds);
