@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
-# The main job: set up, build, and run every figure, table and study the testbed has
-# (`rice reproduce`) into out/, with out/index.md showing each figure, its CSV files and the
-# command that made it. Steps that are up to date are skipped; arguments go to `rice
-# reproduce` (--full for the paper's settings, --force, --only STEP ...).
+# The main job: set up, build, and run the workflow (workflow/Snakefile) that makes every
+# figure, table, study, scene run and video the testbed has into out/, with out/index.html
+# and out/index.md showing each step's figures, its CSV files, its command and wall time.
+# Steps that are up to date are skipped. Arguments go to snakemake, for example
+#   ./scripts/main.sh --config full=true       # the paper's settings
+#   ./scripts/main.sh figure8 table1            # some steps (and what they read) only
+#   ./scripts/main.sh --forceall                # everything again
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 ./scripts/setup.sh
-./build/experiments/rice reproduce --out out "$@"
+snakemake --cores "$(nproc)" "$@"

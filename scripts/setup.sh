@@ -12,7 +12,7 @@ packages=(
   libopenvdb-dev libboost-iostreams-dev libcgal-dev libgsl-dev libpng-dev libembree-dev libopenexr-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libtomlplusplus-dev glmark2-data
-  gnuplot-nox ffmpeg
+  gnuplot-nox ffmpeg snakemake
 )
 
 missing=()

@@ -46,8 +46,5 @@ std::unique_ptr<CommandFamily> add_grain_commands(CLI::App& app);
 std::unique_ptr<CommandFamily> add_render_commands(CLI::App& app);
 /// `rice run SCENE.toml` and `rice scene-keys`.
 std::unique_ptr<CommandFamily> add_scene_commands(CLI::App& app);
-/// `rice reproduce`: the main job, each step through `rice` (its exit status).
-std::unique_ptr<CommandFamily> add_reproduce_command(CLI::App& app,
-                                                     std::function<int(const std::vector<std::string>&)> rice);
 
 }  // namespace rice::experiments

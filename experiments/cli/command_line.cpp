@@ -24,15 +24,6 @@ std::string command_name(const CLI::App& app) {
   return name;
 }
 
-// `rice reproduce` runs each step as `rice ARGUMENTS...`, in this process.
-int run_rice(const std::vector<std::string>& arguments) {
-  std::vector<std::string> words{"rice"};
-  words.insert(words.end(), arguments.begin(), arguments.end());
-  std::vector<char*> argv;
-  for (std::string& w : words) argv.push_back(w.data());
-  return run_command_line(static_cast<int>(argv.size()), argv.data());
-}
-
 }  // namespace
 
 CommandLine::CommandLine()
@@ -44,7 +35,6 @@ CommandLine::CommandLine()
   families_.push_back(add_render_commands(*app_));
   families_.push_back(add_figure_commands(*app_));
   families_.push_back(add_scene_commands(*app_));
-  families_.push_back(add_reproduce_command(*app_, run_rice));
 }
 
 CommandLine::~CommandLine() = default;
