@@ -5,6 +5,7 @@
 #include "experiments/cli/command_family.hpp"
 #include "experiments/cli/option_checks.hpp"
 #include "experiments/render/crop_merge.hpp"
+#include "experiments/render/join_video.hpp"
 #include "experiments/render/render_command.hpp"
 
 namespace rice::experiments {
@@ -19,6 +20,7 @@ class RenderCommands : public CommandFamily {
     add_lights(c);
     add(c, [this] { experiments::validate(settings()); }, [this] { render_command(settings(), out_); });
     add_merge_crops(app);
+    add_join_video(app);
   }
 
  private:
@@ -28,6 +30,10 @@ class RenderCommands : public CommandFamily {
     c->add_option("--frame", render_.frame, "the run's frame (0: the last)")->check(number_in(0, 1e6))
         ->capture_default_str();
     c->add_flag("--every-frame", render_.every_frame, "every frame of the run into frame_NNNN.png, framed as the last");
+    c->add_option("--frames", frame_range_,
+                  "with --every-frame: only frames FIRST LAST, with the whole video's camera (rice join-video joins "
+                  "the parts)")
+        ->expected(2)->check(number_in(1, 1e6));
     c->add_flag("--video", render_.video, "with --every-frame: also render.mp4 (H.264, by ffmpeg) and contact_sheet.png of 12 frames");
     c->add_flag("--deformed-curvature", deformed_curvature_,
                 "soft grains drawn as their own mesh shaded with its curvature (default: their rest curvature; with "
@@ -114,6 +120,19 @@ class RenderCommands : public CommandFamily {
         [this] { merge_crops_command(merge_settings(), merge_out_); });
   }
 
+  void add_join_video(CLI::App& app) {
+    CLI::App* c = app.add_subcommand("join-video", "the parts of a video (rice render --every-frame --frames) "
+                                                   "joined: every frame, render.mp4 and contact_sheet.png");
+    c->add_option("parts", join_parts_, "output folders of rice render --every-frame --frames")->required();
+    c->add_option("--out", join_out_, "output folder")->capture_default_str();
+    add(c, [this] { experiments::validate(join_settings()); },
+        [this] { join_video_command(join_settings(), join_out_); });
+  }
+
+  JoinVideoSettings join_settings() const {
+    return {std::vector<std::filesystem::path>(join_parts_.begin(), join_parts_.end())};
+  }
+
   MergeCropsSettings merge_settings() const {
     MergeCropsSettings s = merge_;
     s.parts.assign(merge_parts_.begin(), merge_parts_.end());
@@ -124,6 +143,10 @@ class RenderCommands : public CommandFamily {
     RenderCommandSettings s = render_;
     s.meshes.assign(meshes_.begin(), meshes_.end());
     s.run = run_;
+    if (frame_range_.size() == 2) {
+      s.first_frame = frame_range_[0];
+      s.last_frame = frame_range_[1];
+    }
     s.render.sampler = sampler_ == "stratified"    ? shading::SamplerKind::kStratified
                        : sampler_ == "independent" ? shading::SamplerKind::kIndependent
                                                    : shading::SamplerKind::kSobol;
@@ -160,12 +183,12 @@ class RenderCommands : public CommandFamily {
 
   RenderCommandSettings render_;
   MergeCropsSettings merge_;
-  std::vector<std::string> merge_parts_;
-  std::string merge_out_ = "out/render";
+  std::vector<std::string> merge_parts_, join_parts_;
+  std::string merge_out_ = "out/render", join_out_ = "out/video";
   std::string out_ = "out/render", sampler_ = "sobol", sky_image_, run_, integrator_ = "cdrf", lighting_ = "studio";
   std::vector<std::string> meshes_;
   std::vector<double> eye_, look_at_, area_;
-  std::vector<int> crop_;
+  std::vector<int> crop_, frame_range_;
   double fov_ = 30.0, aperture_ = 0.0, focus_ = 0.0, shading_radius_mm_ = 1e3 * kShadingRadius;
   bool no_shadows_ = false, no_ao_ = false, no_ground_ = false, side_by_side_ = false, deformed_curvature_ = false;
 };

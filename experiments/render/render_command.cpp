@@ -43,21 +43,27 @@ std::vector<std::filesystem::path> mesh_files(const std::vector<std::filesystem:
   return files;
 }
 
-/// A run's frames to render: one (--frame, or the last), or every frame, the last first so
-/// that its framing holds for all.
-std::vector<std::filesystem::path> frames_to_render(const RenderCommandSettings& s) {
-  std::vector<std::filesystem::path> frames = run_frames(s.run);
-  if (s.every_frame) {
-    std::reverse(frames.begin(), frames.end());
-    return frames;
-  }
-  return {s.frame > 0 ? run_frame_path(s.run, s.frame) : frames.back()};
-}
-
 /// N of a frame file frame_NNNN.csv.
 int frame_number(const std::filesystem::path& frame) {
   const std::string stem = frame.stem().string();
   return std::stoi(stem.substr(stem.find('_') + 1));
+}
+
+/// A run's frames to render (of `frames`, all the run has): one (--frame, or the last), or
+/// every frame (in --frames' range), the last first so that its framing holds for all.
+std::vector<std::filesystem::path> frames_to_render(const RenderCommandSettings& s,
+                                                    std::vector<std::filesystem::path> frames) {
+  if (!s.every_frame) return {s.frame > 0 ? run_frame_path(s.run, s.frame) : frames.back()};
+  if (s.last_frame > 0) {
+    std::erase_if(frames, [&](const std::filesystem::path& f) {
+      return frame_number(f) < s.first_frame || frame_number(f) > s.last_frame;
+    });
+    if (frames.empty())
+      throw std::invalid_argument("render: --frames " + std::to_string(s.first_frame) + " " +
+                                  std::to_string(s.last_frame) + ": the run has none of those frames");
+  }
+  std::reverse(frames.begin(), frames.end());
+  return frames;
 }
 
 /// Where mesh i of n goes side by side: centred in cell i of a grid about √(1.5 n) cells
@@ -98,6 +104,7 @@ void add_mesh_files(shading::RenderScene& scene, const RenderCommandSettings& s,
 /// What every image of one command shares, made once.
 struct RenderInputs {
   std::vector<std::filesystem::path> files, frames;
+  std::vector<std::filesystem::path> run_frames;  ///< every frame the run has
   std::shared_ptr<const RunVariants> variants;
   std::vector<ColliderDrawing> colliders;
   double fps = 30.0;  ///< the run's
@@ -111,10 +118,10 @@ struct RenderTotals {
   int own_meshes = 0;  ///< soft grains drawn as their own deformed mesh (the last image's)
 };
 
-/// The times [s] of the frames rendered.
+/// The times [s] of the run's frames.
 std::vector<double> frame_times(const RenderInputs& in) {
   std::vector<double> times;
-  for (const auto& frame : in.frames) times.push_back(frame_number(frame) / in.fps);
+  for (const auto& frame : in.run_frames) times.push_back(frame_number(frame) / in.fps);
   return times;
 }
 
@@ -148,20 +155,31 @@ shading::Image integrate(const RenderCommandSettings& s, const RenderInputs& in,
   return image;
 }
 
+/// The grains of image k (a run's frame, or the mesh files) and the bowl in `scene`; the box
+/// that frames them.
+Eigen::AlignedBox3d add_subject(shading::RenderScene& scene, const RenderCommandSettings& s, const RenderInputs& in,
+                                const std::filesystem::path& frame, RenderTotals& totals) {
+  std::vector<Eigen::AlignedBox3d> grain_boxes;
+  if (!s.run.empty()) {
+    totals.own_meshes = add_run_grains(scene, s.run, *in.variants, frame, grain_boxes, s.soft);
+  } else {
+    add_mesh_files(scene, s, in.files, grain_boxes);
+  }
+  return add_bowl(scene, s, framing_box(grain_boxes));
+}
+
+/// A video's stage: it frames the run's last frame and what any frame's colliders show.
+Stage video_stage(const RenderCommandSettings& s, const RenderInputs& in, const Eigen::AlignedBox3d& last_frame) {
+  return stage_for(s, last_frame.merged(drawn_colliders_box(in.colliders, frame_times(in))));
+}
+
 /// Image k: its scene, the stage (set on this image when none is yet), the render, its PNG
 /// and its EXR with the AOVs.
 void render_image(const RenderCommandSettings& s, const RenderInputs& in, int k, std::optional<Stage>& stage,
                   const std::filesystem::path& folder, RenderTotals& totals) {
   shading::RenderScene scene;
-  std::vector<Eigen::AlignedBox3d> grain_boxes;
-  if (!s.run.empty()) {
-    totals.own_meshes = add_run_grains(scene, s.run, *in.variants, in.frames[k], grain_boxes, s.soft);
-  } else {
-    add_mesh_files(scene, s, in.files, grain_boxes);
-  }
-  const Eigen::AlignedBox3d box = add_bowl(scene, s, framing_box(grain_boxes));
-  if (!stage)  // a video frames what any of its frames shows
-    stage = stage_for(s, s.every_frame ? box.merged(drawn_colliders_box(in.colliders, frame_times(in))) : box);
+  const Eigen::AlignedBox3d box = add_subject(scene, s, in, s.run.empty() ? "" : in.frames[k], totals);
+  if (!stage) stage = s.every_frame ? video_stage(s, in, box) : stage_for(s, box);  // image 0: the last frame
   add_set(scene, s, *stage);
   if (!s.run.empty()) add_colliders(scene, in.colliders, frame_number(in.frames[k]) / in.fps, stage->camera.position);
   scene.commit();
@@ -197,6 +215,10 @@ void write_render_info(const RenderCommandSettings& s, const RenderInputs& in, c
                         run_info({{"command", "render"},
                                   {"meshes", meshes},
                                   {"images", cell(images)},
+                                  {"frames", s.every_frame ? cell(frame_number(in.frames.back())) + " " +
+                                                                 cell(frame_number(in.frames.front()))
+                                                           : "n/a"},
+                                  {"run_fps", s.run.empty() ? "n/a" : cell(in.fps)},
                                   {"instances", cell(totals.instances)},
                                   {"prototypes", cell(totals.prototypes)},
                                   {"soft_instance_tolerance_m", cell(s.soft.instance_tolerance)},
@@ -268,6 +290,8 @@ void validate(const RenderCommandSettings& s) {
   if (s.every_frame && (s.run.empty() || s.frame > 0))
     throw std::invalid_argument("render: --every-frame renders each frame of a --run, without --frame");
   if (s.video && !s.every_frame) throw std::invalid_argument("render: --video needs --every-frame");
+  if ((s.first_frame != 0 || s.last_frame != 0) && !(s.every_frame && 0 < s.first_frame && s.first_frame <= s.last_frame))
+    throw std::invalid_argument("render: --frames FIRST LAST needs --every-frame and 1 <= FIRST <= LAST");
   if (!(s.absorption_percent >= 0.0 && s.absorption_percent <= 100.0))
     throw std::invalid_argument("render: --absorption must be in [0, 100] %");
   if (s.render.width < 1 || s.render.height < 1 || s.render.width > 16384 || s.render.height > 16384)
@@ -293,7 +317,8 @@ RenderOutcome render_command(const RenderCommandSettings& settings, const std::f
   RenderInputs inputs;
   inputs.files = mesh_files(settings.meshes);
   if (!settings.run.empty()) {
-    inputs.frames = frames_to_render(settings);
+    inputs.run_frames = run_frames(settings.run);
+    inputs.frames = frames_to_render(settings, inputs.run_frames);
     inputs.variants = settings.variants ? settings.variants : std::make_shared<const RunVariants>(
                                                                   read_run_variants(settings.run, settings.shading_radius));
     inputs.colliders = read_collider_drawings(settings.run);
@@ -304,6 +329,10 @@ RenderOutcome render_command(const RenderCommandSettings& settings, const std::f
 
   std::optional<Stage> stage;
   RenderTotals totals;
+  if (settings.every_frame && inputs.frames.front() != inputs.run_frames.back()) {  // a part of the video
+    shading::RenderScene last_frame;
+    stage = video_stage(settings, inputs, add_subject(last_frame, settings, inputs, inputs.run_frames.back(), totals));
+  }
   const int images = settings.run.empty() ? 1 : static_cast<int>(inputs.frames.size());
   Progress progress("render: frames", images);
   for (int k = 0; k < images; ++k) {

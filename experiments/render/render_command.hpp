@@ -65,6 +65,10 @@ struct RenderCommandSettings {
   /// last frame's framing. The variants' curvature and the CDRF table are made once.
   bool every_frame = false;
   bool video = false;  ///< with every_frame: render.mp4 at the run's frame rate and contact_sheet.png (io/video.hpp)
+  /// With every_frame: only frames first_frame .. last_frame (0 0: all), with the camera of the
+  /// whole video, so that groups of frames rendered by separate processes join into one video
+  /// (`rice join-video`).
+  int first_frame = 0, last_frame = 0;
   SoftGrainDrawing soft;  ///< how a soft run's grains are drawn
   double shading_radius = kShadingRadius;  ///< [m] grains' normals and curvature smoothed over it (scene_pieces.hpp)
   /// The run's variants, read once by a caller that renders one run many times (a study); null:

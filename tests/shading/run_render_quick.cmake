@@ -1,5 +1,5 @@
-# `rice render` (meshes, a run's every frame and its video, the path tracer), `rice figure 13`,
-# `rice study cdrf`, `translucency`, `render` and `path-depth` end to end at toy sizes: each writes its files;
+# `rice render` (meshes, a run's every frame and its video, whole and joined from parts, the path
+# tracer), `rice figure 13`, `rice study cdrf`, `translucency`, `render` and `path-depth` end to end at toy sizes: each writes its files;
 # the same seed renders the same EXR twice; two crops merged are the whole frame, byte for byte; a
 # missing mesh exits non-zero and leaves no folder.
 # Called by CTest with -DRICE=<rice binary> -DOUT=<scratch folder> -DSCENES=<experiments/scenes>.
@@ -68,6 +68,23 @@ execute_process(COMMAND ffprobe -v error -show_entries stream=width,height -of c
                         "${OUT}/video/contact_sheet.png" OUTPUT_VARIABLE sheet OUTPUT_STRIP_TRAILING_WHITESPACE)
 if(NOT sheet STREQUAL "140,18")
   message(FATAL_ERROR "contact_sheet.png is '${sheet}' pixels, not 4 tiles of 32 x 18: 140,18")
+endif()
+# The video in two parts (as separate processes or cluster jobs render it), joined: the same
+# frames, video and contact sheet, byte for byte.
+run(render --run "${OUT}/run" --every-frame --frames 3 4 --width 32 --height 18 --spp 1 --out "${OUT}/video_part2")
+run(render --run "${OUT}/run" --every-frame --frames 1 2 --width 32 --height 18 --spp 1 --out "${OUT}/video_part1")
+run(join-video "${OUT}/video_part2" "${OUT}/video_part1" --out "${OUT}/video_joined")
+foreach(file frame_0001.png frame_0002.exr frame_0003.png frame_0004.exr render.mp4 contact_sheet.png)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${OUT}/video/${file}" "${OUT}/video_joined/${file}"
+                  RESULT_VARIABLE different)
+  if(different)
+    message(FATAL_ERROR "a video joined from two parts differs from the whole in ${file}")
+  endif()
+endforeach()
+execute_process(COMMAND "${RICE}" join-video "${OUT}/video_part1" "${OUT}/video_part1" --out "${OUT}/video_twice"
+                RESULT_VARIABLE result OUTPUT_QUIET ERROR_VARIABLE error)
+if(result EQUAL 0 OR NOT error MATCHES "frame [12] is in two parts")
+  message(FATAL_ERROR "join-video took a part twice: ${error}")
 endif()
 # The frame-cost study on the short run: a window of a 64 x 36 frame.
 run(study frame-cost --run "${OUT}/run" --width 64 --height 36 --window 16 8 --reference-spp 16 --paper-spp 8
