@@ -4,7 +4,7 @@
 # and out/index.md showing each step's figures, its CSV files, its command and wall time.
 # Steps that are up to date are skipped. Arguments go to snakemake, for example
 #   ./scripts/main.sh --config full=true       # the paper's settings
-#   ./scripts/main.sh figure8 table1            # some steps (and what they read) only
+#   ./scripts/main.sh figure8 video_chawan      # some steps (and what they read) only
 #   ./scripts/main.sh --forceall                # everything again
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."

@@ -42,9 +42,11 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # does HardCasesStudyQuick (over 4 min here; its checks, xpbd/model_health.hpp, are sanitized
 # in NeoHookeanHardCases). It also FAILS in this build, a known defect (docs/known-limits.md,
 # "Scale"): clang's grain meshes, pressed to 80%, keep 41 tets inverted after the release.
+# The workflow tests (Workflow*) test the workflow and the cluster, not C++: the commands they
+# run are sanitized in their own tests.
 skipped='AngleOfRepose.CohesionRaisesTheAngleOfAPouredHeap|Compression.FiveHundredSoftGrains'
 skipped+='|Energy.DampedMotionNeverGainsEnergy|SceneDigests|TetQualityStudyQuick|SceneConvergenceStudyQuick'
 skipped+='|ShippedScenes.EachRunsAFrameAsItShips|ContactStudyQuick|Table1.RunsTheFourScenes|SceneCommand|RenderCommands'
 skipped+='|SoftPileEnergy|ConvergenceStudyQuick|ContactStudy.BothSolversPressTwoGrains|SubsurfaceBake.SphereMesh'
-skipped+='|ResumeSoft|ScaleStudyQuick|HardCasesStudyQuick'
+skipped+='|ResumeSoft|ScaleStudyQuick|HardCasesStudyQuick|Workflow'
 ctest --test-dir build-sanitize --output-on-failure -j "$(nproc)" -E "$skipped"

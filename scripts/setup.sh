@@ -15,6 +15,9 @@ packages=(
   gnuplot-nox ffmpeg snakemake
 )
 
+# The test suite's also: a Slurm cluster for the workflow's cluster test (test.sh sets this).
+[ "${RICE_TEST_PACKAGES:-}" = "1" ] && packages+=(slurm-wlm munge)
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -15,7 +15,7 @@ stage() {  # NAME COMMAND...: runs the command, noting its seconds
   stages+="$name $((SECONDS - begun)) s, "
   echo "test: $name passed ($((SECONDS - start)) s so far)"
 }
-stage "setup and Release build" ./scripts/setup.sh
+stage "setup and Release build" env RICE_TEST_PACKAGES=1 ./scripts/setup.sh
 stage "Release suite" ctest --test-dir build --output-on-failure -j "$(nproc)"
 if [ "${1:-}" != "--quick" ]; then
   stage "sanitizer build and suite" ./scripts/sanitize.sh
