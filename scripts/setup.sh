@@ -15,8 +15,8 @@ packages=(
   gnuplot-nox ffmpeg snakemake
 )
 
-# The test suite's also: a Slurm cluster for the workflow's cluster test (test.sh sets this).
-[ "${RICE_TEST_PACKAGES:-}" = "1" ] && packages+=(slurm-wlm munge)
+# The test suite's also: a Slurm cluster and a browser for the workflow's tests (test.sh sets this).
+[ "${RICE_TEST_PACKAGES:-}" = "1" ] && packages+=(slurm-wlm munge chromium)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,7 +1,7 @@
 #!/bin/bash
 # The main job's workflow (workflow/Snakefile) on this machine, on two of its cheapest steps:
 # it runs them and writes the index, a second run does nothing, a changed results version
-# reruns them, and out/index.html links only files that exist.
+# reruns them, out/index.html links only files that exist, and headless Chromium draws it.
 # Usage: run_workflow.sh RICE OUT (run from anywhere; the workflow runs in the source tree).
 set -euo pipefail
 rice=$1 out=$2
@@ -23,4 +23,8 @@ snakemake --cores 2 --directory . -n "${config[@]}" version=test-bump > "$out.dr
 grep -q "figure11" "$out.dry" || { echo "a new results version reruns nothing" >&2; exit 1; }
 
 python3 tests/workflow/check_index_links.py "$out/index.html"
-echo "workflow: ran, second run does nothing, links resolve"
+command -v chromium > /dev/null || { echo "chromium is not installed (scripts/test.sh installs it)" >&2; exit 1; }
+chromium --headless --no-sandbox --disable-gpu --window-size=1280,1600 --screenshot="$out/index.png" \
+  "file://$(realpath "$out/index.html")" > "$out.chromium.log" 2>&1 || { cat "$out.chromium.log" >&2; exit 1; }
+python3 tests/workflow/check_page_not_blank.py "$out/index.png"
+echo "workflow: ran, second run does nothing, links resolve, the page is drawn"
