@@ -15,8 +15,9 @@ packages=(
   gnuplot-nox ffmpeg snakemake
 )
 
-# The test suite's also: a Slurm cluster and a browser for the workflow's tests (test.sh sets this).
-[ "${RICE_TEST_PACKAGES:-}" = "1" ] && packages+=(slurm-wlm munge chromium)
+# The test suite's also (test.sh sets this): a Slurm cluster and a browser for the workflow's
+# tests, Blender for the point cache's round trip.
+[ "${RICE_TEST_PACKAGES:-}" = "1" ] && packages+=(slurm-wlm munge chromium blender)
 
 missing=()
 for p in "${packages[@]}"; do

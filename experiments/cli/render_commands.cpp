@@ -6,6 +6,7 @@
 #include "experiments/cli/option_checks.hpp"
 #include "experiments/render/crop_merge.hpp"
 #include "experiments/render/join_video.hpp"
+#include "experiments/render/point_cache.hpp"
 #include "experiments/render/render_command.hpp"
 
 namespace rice::experiments {
@@ -21,6 +22,7 @@ class RenderCommands : public CommandFamily {
     add(c, [this] { experiments::validate(settings()); }, [this] { render_command(settings(), out_); });
     add_merge_crops(app);
     add_join_video(app);
+    add_point_cache(app);
   }
 
  private:
@@ -129,6 +131,17 @@ class RenderCommands : public CommandFamily {
         [this] { join_video_command(join_settings(), join_out_); });
   }
 
+  void add_point_cache(CLI::App& app) {
+    CLI::App* c = app.add_subcommand("point-cache", "a run's grains for Blender: grains.obj and grains.pc2, its "
+                                                    "vertices at every frame (scripts/blender_import.py)");
+    c->add_option("--run", cache_.run, "the output folder of a scene run (rice run)")->required();
+    c->add_option("--max-vertices", cache_.max_vertices, "per grain, the render mesh simplified (0: whole)")
+        ->check(number_in(0, 1e7))
+        ->capture_default_str();
+    c->add_option("--out", cache_out_, "output folder")->capture_default_str();
+    add(c, [this] { experiments::validate(cache_); }, [this] { point_cache_command(cache_, cache_out_); });
+  }
+
   JoinVideoSettings join_settings() const {
     return {std::vector<std::filesystem::path>(join_parts_.begin(), join_parts_.end())};
   }
@@ -184,7 +197,8 @@ class RenderCommands : public CommandFamily {
   RenderCommandSettings render_;
   MergeCropsSettings merge_;
   std::vector<std::string> merge_parts_, join_parts_;
-  std::string merge_out_ = "out/render", join_out_ = "out/video";
+  std::string merge_out_ = "out/render", join_out_ = "out/video", cache_out_ = "out/point-cache";
+  PointCacheSettings cache_;
   std::string out_ = "out/render", sampler_ = "sobol", sky_image_, run_, integrator_ = "cdrf", lighting_ = "studio";
   std::vector<std::string> meshes_;
   std::vector<double> eye_, look_at_, area_;

@@ -106,26 +106,15 @@ class VariantPrototypes {
   std::vector<int> index_;
 };
 
-/// One row per grain: pose (c, q), the render mesh at c + q (drop + P R p − c₀).
+/// One row per grain: its render mesh placed by rigid_grain_place.
 void add_rigid_grains(shading::RenderScene& scene, const NumericCsv& grains_csv, const NumericCsv& frame,
                       const RunVariants& variants, std::vector<Eigen::AlignedBox3d>& boxes) {
-  if (frame.rows.size() != grains_csv.rows.size())
-    throw std::runtime_error("render: " + frame.path.string() + " has " + std::to_string(frame.rows.size()) +
-                             " grains, grains.csv " + std::to_string(grains_csv.rows.size()));
+  check_rigid_frame(grains_csv, frame);
   VariantPrototypes prototype(scene, variants);
   for (size_t g = 0; g < grains_csv.rows.size(); ++g) {
-    const auto& a = grains_csv.rows[g];
-    const auto& b = frame.rows[g];
     const int variant = variant_of(grains_csv, g, variants);
-    if (!in_scene(frame, b)) continue;
-    const Eigen::Quaterniond R(value(grains_csv, a, "qw"), value(grains_csv, a, "qx"), value(grains_csv, a, "qy"),
-                               value(grains_csv, a, "qz"));
-    const Eigen::Quaterniond q(value(frame, b, "qw"), value(frame, b, "qx"), value(frame, b, "qy"), value(frame, b, "qz"));
-    const Eigen::Vector3d drop(value(grains_csv, a, "drop_x"), value(grains_csv, a, "drop_y"), value(grains_csv, a, "drop_z"));
-    const Eigen::Vector3d c0(value(grains_csv, a, "centre_x"), value(grains_csv, a, "centre_y"), value(grains_csv, a, "centre_z"));
-    const Eigen::Vector3d c(value(frame, b, "x"), value(frame, b, "y"), value(frame, b, "z"));
-    const Eigen::Affine3d place = Eigen::Translation3d(c) * q.normalized() * Eigen::Translation3d(drop - c0) *
-                                  R.normalized() * Eigen::Scaling(value(grains_csv, a, "swell"));
+    if (!in_scene(frame, frame.rows[g])) continue;
+    const Eigen::Affine3d place = rigid_grain_place(grains_csv, frame, g);
     scene.add_instance(prototype[variant], place, 0, static_cast<int>(g));
     boxes.push_back(placed_box(variants.meshes[variant].V, place));
   }
@@ -189,8 +178,27 @@ int add_soft_grains(shading::RenderScene& scene, const NumericCsv& grains_csv, c
 
 }  // namespace
 
+void check_rigid_frame(const NumericCsv& grains_csv, const NumericCsv& frame) {
+  if (frame.rows.size() != grains_csv.rows.size())
+    throw std::runtime_error("render: " + frame.path.string() + " has " + std::to_string(frame.rows.size()) +
+                             " grains, grains.csv " + std::to_string(grains_csv.rows.size()));
+}
+
+Eigen::Affine3d rigid_grain_place(const NumericCsv& grains_csv, const NumericCsv& frame, size_t g) {
+  const auto& a = grains_csv.rows[g];
+  const auto& b = frame.rows[g];
+  const Eigen::Quaterniond R(value(grains_csv, a, "qw"), value(grains_csv, a, "qx"), value(grains_csv, a, "qy"),
+                             value(grains_csv, a, "qz"));
+  const Eigen::Quaterniond q(value(frame, b, "qw"), value(frame, b, "qx"), value(frame, b, "qy"), value(frame, b, "qz"));
+  const Eigen::Vector3d drop(value(grains_csv, a, "drop_x"), value(grains_csv, a, "drop_y"), value(grains_csv, a, "drop_z"));
+  const Eigen::Vector3d c0(value(grains_csv, a, "centre_x"), value(grains_csv, a, "centre_y"), value(grains_csv, a, "centre_z"));
+  const Eigen::Vector3d c(value(frame, b, "x"), value(frame, b, "y"), value(frame, b, "z"));
+  return Eigen::Translation3d(c) * q.normalized() * Eigen::Translation3d(drop - c0) * R.normalized() *
+         Eigen::Scaling(value(grains_csv, a, "swell"));
+}
+
 std::vector<SoftGrain> soft_run_grains(const NumericCsv& grains_csv, const NumericCsv& frame,
-                                       const RunVariants& variants) {
+                                       const RunVariants& variants, bool parked_too) {
   if (variants.simulation.empty())
     throw std::runtime_error("render: " + frame.path.string() +
                              " holds soft grains' vertices, and the run's variants/ no simulation meshes (.mesh)");
@@ -200,7 +208,7 @@ std::vector<SoftGrain> soft_run_grains(const NumericCsv& grains_csv, const Numer
     const int variant = variant_of(grains_csv, g, variants);
     const grains::VolumeMesh& simulation = variants.simulation[variant];
     const grains::Vertices x = simulation_vertices(frame, g, simulation.V.rows(), row);
-    if (!in_scene(frame, frame.rows[row - 1])) continue;
+    if (!parked_too && !in_scene(frame, frame.rows[row - 1])) continue;
     grains.push_back({.grain = static_cast<int>(g),
                       .variant = variant,
                       .swell = value(grains_csv, grains_csv.rows[g], "swell"),

@@ -69,10 +69,17 @@ struct SoftGrain {
 };
 
 /// The soft grains in the scene at `frame` (a soft run's, whose rows are grain, vertex,
-/// x, y, z and in_scene), in grain order. Throws std::runtime_error naming the file when the
-/// rows do not match the grains' variants.
+/// x, y, z and in_scene), in grain order; with `parked_too` every grain. Throws
+/// std::runtime_error naming the file when the rows do not match the grains' variants.
 std::vector<SoftGrain> soft_run_grains(const NumericCsv& grains_csv, const NumericCsv& frame,
-                                       const RunVariants& variants);
+                                       const RunVariants& variants, bool parked_too = false);
+
+/// Throws std::runtime_error when a rigid run's frame has not one row per grain of grains.csv.
+void check_rigid_frame(const NumericCsv& grains_csv, const NumericCsv& frame);
+
+/// Where a rigid run's frame puts grain g's variant mesh: c + q (drop + P R p − c₀) (grains.csv's
+/// drop, R, P and c₀; the frame's centre c and rotation q).
+Eigen::Affine3d rigid_grain_place(const NumericCsv& grains_csv, const NumericCsv& frame, size_t g);
 
 /// Its render mesh, carried by its simulation vertices through its variant's embedding.
 grains::SurfaceMesh deformed_render_mesh(const SoftGrain& grain, const RunVariants& variants);
