@@ -81,16 +81,16 @@ grains::SurfaceMesh one_mesh(const CacheVariants& v, const NumericCsv& grains_cs
 }  // namespace
 
 void validate(const PointCacheSettings& s) {
-  for (const char* name : {"grains.csv", "variants", "frames"})
-    if (!std::filesystem::exists(s.run / name))
-      throw std::invalid_argument("point-cache: --run " + s.run.string() + " has no " + name +
-                                  " (a scene run's output folder is expected)");
   if (s.max_vertices < 0 || (s.max_vertices > 0 && s.max_vertices < 4))
     throw std::invalid_argument("point-cache: --max-vertices must be 0 (whole meshes) or at least 4");
 }
 
 void point_cache_command(const PointCacheSettings& s, const std::filesystem::path& folder) {
   validate(s);
+  for (const char* name : {"grains.csv", "variants", "frames"})
+    if (!std::filesystem::exists(s.run / name))
+      throw std::invalid_argument("point-cache: --run " + s.run.string() + " has no " + name +
+                                  " (a scene run's output folder is expected)");
   const auto start = std::chrono::steady_clock::now();
   const CacheVariants variants = cache_variants(s);
   const NumericCsv grains_csv = read_numeric_csv(s.run / "grains.csv");

@@ -16,10 +16,11 @@ struct PointCacheSettings {
   int max_vertices = 1000;    ///< per grain; 0: the render meshes whole
 };
 
-/// Throws std::invalid_argument for a folder that is not a run's or max_vertices in 1..3.
+/// Throws std::invalid_argument for max_vertices in 1..3.
 void validate(const PointCacheSettings& settings);
 
-/// Writes grains.obj, grains.pc2 and run_info.txt into `folder`.
+/// Writes grains.obj, grains.pc2 and run_info.txt into `folder`; throws std::invalid_argument
+/// first when `run` is not a run's folder.
 void point_cache_command(const PointCacheSettings& settings, const std::filesystem::path& folder);
 
 }  // namespace rice::experiments

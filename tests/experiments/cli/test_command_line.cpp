@@ -66,7 +66,7 @@ std::vector<std::string> required_arguments(const std::vector<std::string>& path
   if (path == std::vector<std::string>{"render"}) return {"--meshes", RICE_TEST_MESH};
   if (path == std::vector<std::string>{"merge-crops"}) return {RICE_TEST_SCRATCH};
   if (path == std::vector<std::string>{"study", "soft-curvature"} || path == std::vector<std::string>{"study", "soft-instances"} ||
-      path == std::vector<std::string>{"study", "frame-cost"})
+      path == std::vector<std::string>{"study", "frame-cost"} || path == std::vector<std::string>{"point-cache"})
     return {"--run", RICE_TEST_SCRATCH};
   if (path == std::vector<std::string>{"study", "scale"}) return {"--scene", RICE_SCENES_DIR "/drop.toml"};
   if (path == std::vector<std::string>{"study", "hard-cases"}) return {"--scenes", RICE_SCENES_DIR};
