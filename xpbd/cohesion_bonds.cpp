@@ -4,6 +4,7 @@
 #include "xpbd/state_archive.hpp"
 
 #include <algorithm>
+#include <set>
 
 namespace rice::xpbd {
 
@@ -128,6 +129,17 @@ void CohesionBonds::end_substep(double h) {
 template <class Self, class Archive>
 void CohesionBonds::transfer_state(Self& self, Archive& archive) {
   archive(self.bonds_, self.broken_pairs_, self.sorted_, self.broken_);
+}
+
+std::vector<int> CohesionBonds::bonded_neighbours(int bodies) const {
+  std::set<std::pair<int, int>> pairs;
+  for (const Bond& bond : bonds_) pairs.emplace(bond.key[0], bond.key[1]);
+  std::vector<int> count(bodies, 0);
+  for (const auto& [a, b] : pairs) {
+    if (a >= 0 && a < bodies) ++count[a];
+    if (b >= 0 && b < bodies) ++count[b];
+  }
+  return count;
 }
 
 void CohesionBonds::save_state(StateWriter& out) const { transfer_state(*this, out); }

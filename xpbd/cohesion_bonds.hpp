@@ -53,6 +53,8 @@ class CohesionBonds {
   void end_substep(double h);
   int count() const { return static_cast<int>(bonds_.size()); }
   int broken() const { return broken_; }  ///< body pairs whose bonds broke
+  /// For each of `bodies` bodies, how many others it is bonded to (body pairs with a bond).
+  std::vector<int> bonded_neighbours(int bodies) const;
   /// Its state between steps, for checkpoints (state_archive.hpp).
   void save_state(StateWriter& out) const;
   void load_state(StateReader& in);

@@ -77,6 +77,11 @@ class ContactSolver {
   void end_substep(bool end_of_interval);
 
   const ContactStatistics& statistics() const { return statistics_; }
+  /// For each body, how many others it is bonded to (all zero without cohesion).
+  std::vector<int> bonded_neighbours() const {
+    const int bodies = static_cast<int>(model_.bodies.size());
+    return bonds_ ? bonds_->bonded_neighbours(bodies) : std::vector<int>(bodies, 0);
+  }
   /// Whether the last broad phase found no body pair that may touch.
   bool no_candidates() const { return body_pairs_.empty(); }
 

@@ -111,6 +111,7 @@ struct SceneEffects {
   bool damping = true;   ///< soft grains' Rayleigh damping τ from the soak (eq. 4); off: τ = 0
   bool sleeping = true;
   bool render_meshes = false;  ///< also write each frame's deformed render meshes (large)
+  bool paraview = false;       ///< also write each frame's grains for ParaView (paraview_observer.hpp)
 };
 
 /// A closed triangle mesh as a collider (`shape = "mesh"`): a mould, a lid, a hand. Its

@@ -148,6 +148,7 @@ void read_effects(TomlSection section, SceneEffects& e) {
   e.damping = section.flag("damping");
   e.sleeping = section.flag("sleeping");
   e.render_meshes = section.flag("render_meshes");
+  e.paraview = section.flag("paraview");
   section.finish();
 }
 

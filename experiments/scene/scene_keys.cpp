@@ -138,6 +138,8 @@ std::vector<SceneKey> effect_and_render_keys() {
       flag("effects", "damping", true, "soft grains' Rayleigh damping from the soak (eq. 4); false: none"),
       flag("effects", "sleeping", true, "grains at rest sleep until something touches them"),
       flag("effects", "render_meshes", false, "also write each frame's deformed render meshes (frames/*.ply, large)"),
+      flag("effects", "paraview", false,
+           "also write each frame's grains as points for ParaView (paraview/*.vtp, grains.pvd): velocity, awake, bonds"),
       integer("render", "width", closed(16, 16384), 640.0, "image width [pixels]"),
       integer("render", "height", closed(16, 16384), 480.0, "image height [pixels]"),
       integer("render", "samples_per_pixel", closed(1, 1 << 20), 16.0, "samples per pixel"),

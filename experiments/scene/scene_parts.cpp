@@ -7,6 +7,7 @@
 #include "experiments/scene/fill_emitter.hpp"
 #include "experiments/scene/frames_observer.hpp"
 #include "experiments/scene/impact_observer.hpp"
+#include "experiments/scene/paraview_observer.hpp"
 #include "experiments/scene/pile_observer.hpp"
 #include "experiments/scene/render_mesh_observer.hpp"
 #include "experiments/scene/scene_geometry_observer.hpp"
@@ -56,6 +57,7 @@ std::vector<std::unique_ptr<Observer>> make_observers(const Scene& scene, const 
   observers.push_back(std::make_unique<StatsObserver>(folder));
   observers.push_back(std::make_unique<FramesObserver>(folder));
   if (scene.effects.render_meshes) observers.push_back(std::make_unique<RenderMeshObserver>(folder));
+  if (scene.effects.paraview) observers.push_back(std::make_unique<ParaviewObserver>(folder, scene.solver.fps));
   observers.push_back(std::make_unique<PileObserver>(folder, scene));
   if (const std::optional<double> drop = drop_time(scene)) observers.push_back(std::make_unique<ImpactObserver>(*drop));
   observers.push_back(std::make_unique<SectionObserver>(folder, scene));

@@ -24,6 +24,8 @@ class Stepper {
   /// Simulated time at the start of the next frame [s].
   double time() const { return solver_.time(); }
   const xpbd::ContactStatistics& contacts() const { return solver_.contacts()->statistics(); }
+  /// For each body, how many others it is bonded to.
+  std::vector<int> bonded_neighbours() const { return solver_.contacts()->bonded_neighbours(); }
   const xpbd::SolverTimings& timings() const { return solver_.timings(); }
 
   /// Its settings and where its time went, for run_info.txt.

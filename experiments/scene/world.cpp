@@ -26,10 +26,10 @@ void World::release(int g, const xpbd::Vec3& offset, const xpbd::Vec3& velocity)
 
 xpbd::Vec3 World::centre(int g) const { return xpbd::body_centre(model, model.bodies[g]); }
 
-double World::speed(int g) const {
+xpbd::Vec3 World::velocity(int g) const {
   const xpbd::Body& body = model.bodies[g];
-  if (body.kind == xpbd::BodyKind::kRigid) return model.rigid_bodies[body.rigid_body].v.norm();
-  return model.particles.v.middleRows(body.first_particle, body.particle_count).colwise().mean().norm();
+  if (body.kind == xpbd::BodyKind::kRigid) return model.rigid_bodies[body.rigid_body].v;
+  return model.particles.v.middleRows(body.first_particle, body.particle_count).colwise().mean().transpose();
 }
 
 double World::top() const {

@@ -54,8 +54,9 @@ struct World {
   void release(int g, const xpbd::Vec3& offset, const xpbd::Vec3& velocity = xpbd::Vec3::Zero());
 
   xpbd::Vec3 centre(int g) const;
-  /// The speed of grain g's centre of mass [m/s].
-  double speed(int g) const;
+  /// The velocity of grain g's centre of mass [m/s], and its speed.
+  xpbd::Vec3 velocity(int g) const;
+  double speed(int g) const { return velocity(g).norm(); }
   /// The highest centre of the grains released; -inf for none.
   double top() const;
   /// The centres of the grains released, in order.
