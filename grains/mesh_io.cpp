@@ -451,6 +451,22 @@ SurfaceMesh read_surface_mesh(const std::filesystem::path& path) {
   return read_surface_mesh(in, format, path.string());
 }
 
+SurfaceMesh merged(const std::vector<SurfaceMesh>& parts) {
+  SurfaceMesh all;
+  Eigen::Index vertices = 0, faces = 0;
+  for (const SurfaceMesh& part : parts) vertices += part.V.rows(), faces += part.F.rows();
+  all.V.resize(vertices, 3);
+  all.F.resize(faces, 3);
+  Eigen::Index v = 0, f = 0;
+  for (const SurfaceMesh& part : parts) {
+    all.V.middleRows(v, part.V.rows()) = part.V;
+    all.F.middleRows(f, part.F.rows()) = part.F.array() + static_cast<int>(v);
+    v += part.V.rows();
+    f += part.F.rows();
+  }
+  return all;
+}
+
 void write_ply(std::ostream& out, const SurfaceMesh& mesh) {
   static_assert(std::endian::native == std::endian::little, "binary PLY output assumes a little-endian host");
   out << "ply\nformat binary_little_endian 1.0\n"

@@ -34,6 +34,9 @@ SurfaceMesh read_surface_mesh(std::istream& in, SurfaceFormat format, const std:
 /// Reads a surface mesh, choosing the format by extension.
 SurfaceMesh read_surface_mesh(const std::filesystem::path& path);
 
+/// One mesh holding all of `parts`, faces renumbered: many grains written as one file.
+SurfaceMesh merged(const std::vector<SurfaceMesh>& parts);
+
 /// Writes a binary little-endian PLY with double vertices and int triangle lists.
 void write_ply(std::ostream& out, const SurfaceMesh& mesh);
 

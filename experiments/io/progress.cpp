@@ -11,9 +11,9 @@
 
 namespace rice::experiments {
 
-Progress::Progress(std::string label, int total)
-    : label_(std::move(label)), total_(total), enabled_(isatty(fileno(stderr)) != 0),
-      start_(std::chrono::steady_clock::now()) {
+Progress::Progress(std::string label, int total, double log_seconds)
+    : label_(std::move(label)), total_(total), log_seconds_(log_seconds), terminal_(isatty(fileno(stderr)) != 0),
+      start_(std::chrono::steady_clock::now()), last_line_(start_) {
   set_activity(label_ + " 0/" + std::to_string(total_) + " done");
 }
 
@@ -22,14 +22,21 @@ void Progress::update(int done) {
   done_ = std::max(done_, done);
   set_activity(label_ + " " + std::to_string(done_) + "/" + std::to_string(total_) + " done");
   // Items finish out of order on several threads: the count shown never goes back.
-  if (enabled_ && done_ > 0) {
-    const double left = seconds_since(start_) / done_ * (total_ - done_);
+  if (done_ == 0) return;
+  const double left = seconds_since(start_) / done_ * (total_ - done_);
+  if (terminal_) {
     std::fprintf(stderr, "\r%s %d/%d, %.0f s left   ", label_.c_str(), done_, total_, left);
+  } else if (seconds_since(last_line_) >= log_seconds_) {
+    std::fprintf(stderr, "%s %d/%d, %.0f s left\n", label_.c_str(), done_, total_, left);
+    last_line_ = std::chrono::steady_clock::now();
+    logged_ = true;
   }
 }
 
 void Progress::finish() {
-  if (enabled_) std::fprintf(stderr, "\r%s done in %.1f s          \n", label_.c_str(), seconds_since(start_));
+  if (terminal_ || logged_)
+    std::fprintf(stderr, "%s%s done in %.1f s          \n", terminal_ ? "\r" : "", label_.c_str(),
+                 seconds_since(start_));
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {

@@ -1,5 +1,7 @@
-// Progress of long loops on a terminal ("label k/N, s left"; quiet when stderr is not a
-// terminal, as in CI), reported as the activity an interrupted run names; wall-clock seconds.
+// Progress of long loops ("label k/N, s left"): on a terminal one line rewritten in place; into
+// a log (stderr not a terminal: a workflow step's log, CI) a line every 30 s and, after any,
+// one when the loop is done, so short loops write nothing. Also the activity an interrupted
+// run names; wall-clock seconds.
 #pragma once
 
 #include <chrono>
@@ -8,11 +10,12 @@
 
 namespace rice::experiments {
 
-/// Progress of a long loop: lines "label k/N, ETA" on stderr when stderr is a terminal, and
-/// the activity reported if the run is interrupted (interrupt.hpp). Thread-safe.
+/// Progress of a long loop: lines "label k/N, ETA" on stderr (see above), and the activity
+/// reported if the run is interrupted (interrupt.hpp). Thread-safe.
 class Progress {
  public:
-  Progress(std::string label, int total);
+  /// `log_seconds`: the time between two lines into a log.
+  Progress(std::string label, int total, double log_seconds = 30.0);
   void update(int done);
   void finish();
 
@@ -20,8 +23,10 @@ class Progress {
   std::string label_;
   int total_;
   int done_ = 0;
-  bool enabled_;
-  std::chrono::steady_clock::time_point start_;
+  double log_seconds_;
+  bool terminal_;
+  bool logged_ = false;  ///< into a log: a line was written
+  std::chrono::steady_clock::time_point start_, last_line_;
   std::mutex mutex_;
 };
 

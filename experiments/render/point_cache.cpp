@@ -13,7 +13,6 @@
 #include "experiments/io/progress.hpp"
 #include "experiments/io/run_info.hpp"
 #include "experiments/render/run_frames.hpp"
-#include "experiments/scene/render_mesh_observer.hpp"
 #include "grains/embedding.hpp"
 #include "grains/mesh_io.hpp"
 #include "grains/mesh_simplification.hpp"
@@ -75,7 +74,7 @@ grains::SurfaceMesh one_mesh(const CacheVariants& v, const NumericCsv& grains_cs
     parts.push_back({x.middleRows(row, mesh.V.rows()), mesh.F});
     row += mesh.V.rows();
   }
-  return merged(parts);
+  return grains::merged(parts);
 }
 
 }  // namespace

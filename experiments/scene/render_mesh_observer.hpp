@@ -19,7 +19,4 @@ class RenderMeshObserver : public Observer {
   std::filesystem::path folder_;
 };
 
-/// One mesh holding all of `parts`, faces renumbered.
-grains::SurfaceMesh merged(const std::vector<grains::SurfaceMesh>& parts);
-
 }  // namespace rice::experiments

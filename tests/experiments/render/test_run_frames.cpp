@@ -12,7 +12,6 @@
 #include "experiments/render/render_command.hpp"
 #include "experiments/render/rigid_fit.hpp"
 #include "experiments/render/run_frames.hpp"
-#include "experiments/scene/render_mesh_observer.hpp"
 #include "experiments/scene/scene_run.hpp"
 #include "grains/mesh_io.hpp"
 
@@ -52,7 +51,7 @@ TEST(RunFrames, ASoftRunsGrainsAreTheRenderMeshesTheRunWrote) {
   ASSERT_EQ(soft.size(), 3u);
   std::vector<grains::SurfaceMesh> meshes;
   for (const SoftGrain& grain : soft) meshes.push_back(deformed_render_mesh(grain, variants));
-  const grains::SurfaceMesh ours = merged(meshes);
+  const grains::SurfaceMesh ours = grains::merged(meshes);
   const grains::SurfaceMesh written = grains::read_surface_mesh(run / "frames" / "frame_0003.ply");
   ASSERT_EQ(ours.V.rows(), written.V.rows());
   EXPECT_EQ(ours.F, written.F);
