@@ -9,4 +9,4 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 ./scripts/setup.sh
-snakemake --cores "$(nproc)" "$@"
+snakemake --cores "$(nproc)" --rerun-incomplete "$@"  # a step killed half way runs again
