@@ -46,6 +46,8 @@ Eigen::MatrixX3d frame_vertices(const CacheVariants& v, const NumericCsv& grains
   Eigen::MatrixX3d x(count, 3);
   Eigen::Index row = 0;
   const auto put = [&](const grains::Vertices& V) {
+    if (row + V.rows() > count)
+      throw std::runtime_error("point-cache: " + frame.path.string() + " holds more grains than grains.csv");
     x.middleRows(row, V.rows()) = V;
     row += V.rows();
   };
