@@ -20,13 +20,16 @@ def files_of(folder, out, extension):
 
 
 def wall_seconds(out, name):
-    """The step's wall time from out/benchmarks/NAME.tsv, or None when it has none."""
-    tsv = out / "benchmarks" / f"{name}.tsv"
-    if not tsv.exists():
-        return None
-    with tsv.open() as f:
-        rows = list(csv.DictReader(f, delimiter="\t"))
-    return float(rows[-1]["s"]) if rows else None
+    """The step's wall time from out/benchmarks/NAME.tsv, with its video parts' (each its own
+    job, out/benchmarks/video-parts/NAME_*.tsv), or None when it has none."""
+    files = [out / "benchmarks" / f"{name}.tsv"] + sorted((out / "benchmarks" / "video-parts").glob(f"{name}_*.tsv"))
+    seconds = None
+    for tsv in (f for f in files if f.exists()):
+        with tsv.open() as f:
+            rows = list(csv.DictReader(f, delimiter="\t"))
+        if rows:
+            seconds = (seconds or 0.0) + float(rows[-1]["s"])
+    return seconds
 
 
 def describe(out, step):
