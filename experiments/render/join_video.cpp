@@ -12,6 +12,7 @@
 #include "experiments/io/progress.hpp"
 #include "experiments/io/run_info.hpp"
 #include "experiments/io/video.hpp"
+#include "experiments/render/run_frames.hpp"
 
 namespace rice::experiments {
 namespace {
@@ -31,7 +32,7 @@ std::map<int, std::filesystem::path> frames_of(const std::vector<std::filesystem
     for (const auto& entry : std::filesystem::directory_iterator(part)) {
       const std::string name = entry.path().filename().string();
       if (!name.starts_with("frame_") || entry.path().extension() != ".png") continue;
-      const int frame = std::stoi(name.substr(6));
+      const int frame = frame_number(entry.path());
       if (!frames.emplace(frame, entry.path()).second)
         throw std::runtime_error("join-video: frame " + std::to_string(frame) + " is in two parts (" +
                                  frames[frame].parent_path().string() + " and " + part.string() + ")");

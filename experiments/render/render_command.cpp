@@ -43,12 +43,6 @@ std::vector<std::filesystem::path> mesh_files(const std::vector<std::filesystem:
   return files;
 }
 
-/// N of a frame file frame_NNNN.csv.
-int frame_number(const std::filesystem::path& frame) {
-  const std::string stem = frame.stem().string();
-  return std::stoi(stem.substr(stem.find('_') + 1));
-}
-
 /// A run's frames to render (of `frames`, all the run has): one (--frame, or the last), or
 /// every frame (in --frames' range), the last first so that its framing holds for all.
 std::vector<std::filesystem::path> frames_to_render(const RenderCommandSettings& s,

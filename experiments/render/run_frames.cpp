@@ -28,6 +28,11 @@ double run_fps(const std::filesystem::path& run) {
   return fps.empty() ? 30.0 : std::stod(fps);
 }
 
+int frame_number(const std::filesystem::path& frame) {
+  const std::string stem = frame.stem().string();
+  return std::stoi(stem.substr(stem.find('_') + 1));
+}
+
 std::vector<std::filesystem::path> run_frames(const std::filesystem::path& run) {
   std::vector<std::filesystem::path> frames;
   for (const auto& entry : std::filesystem::directory_iterator(run / "frames"))
@@ -63,15 +68,18 @@ RunVariants read_run_variants(const std::filesystem::path& run, double shading_r
 
 namespace {
 
-double value(const NumericCsv& csv, const std::vector<double>& row, const char* name) { return row[csv.column(name)]; }
+double value(const NumericCsv& csv, const std::vector<double>& row, const std::string& name) {
+  return row[csv.column(name)];
+}
 
-/// Grain g's variant (grains.csv), checked against the variants read.
-int variant_of(const NumericCsv& grains_csv, size_t g, const RunVariants& variants) {
-  const int variant = static_cast<int>(value(grains_csv, grains_csv.rows[g], "variant"));
-  if (variant < 0 || variant >= static_cast<int>(variants.meshes.size()))
-    throw std::runtime_error("render: " + grains_csv.path.string() + ": grain " + std::to_string(g) + " names variant " +
-                             std::to_string(variant) + " of " + std::to_string(variants.meshes.size()));
-  return variant;
+/// The columns PREFIXx, PREFIXy, PREFIXz of a row.
+Eigen::Vector3d xyz(const NumericCsv& csv, const std::vector<double>& row, const std::string& prefix) {
+  return {value(csv, row, prefix + "x"), value(csv, row, prefix + "y"), value(csv, row, prefix + "z")};
+}
+
+/// The columns qw, qx, qy, qz of a row.
+Eigen::Quaterniond quaternion(const NumericCsv& csv, const std::vector<double>& row) {
+  return {value(csv, row, "qw"), value(csv, row, "qx"), value(csv, row, "qy"), value(csv, row, "qz")};
 }
 
 /// False for a row of a grain still parked far away.
@@ -112,7 +120,7 @@ void add_rigid_grains(shading::RenderScene& scene, const NumericCsv& grains_csv,
   check_rigid_frame(grains_csv, frame);
   VariantPrototypes prototype(scene, variants);
   for (size_t g = 0; g < grains_csv.rows.size(); ++g) {
-    const int variant = variant_of(grains_csv, g, variants);
+    const int variant = grain_variant(grains_csv, g, variants);
     if (!in_scene(frame, frame.rows[g])) continue;
     const Eigen::Affine3d place = rigid_grain_place(grains_csv, frame, g);
     scene.add_instance(prototype[variant], place, 0, static_cast<int>(g));
@@ -178,6 +186,15 @@ int add_soft_grains(shading::RenderScene& scene, const NumericCsv& grains_csv, c
 
 }  // namespace
 
+int grain_variant(const NumericCsv& grains_csv, size_t g, const RunVariants& variants) {
+  const int variant = static_cast<int>(value(grains_csv, grains_csv.rows[g], "variant"));
+  if (variant < 0 || variant >= static_cast<int>(variants.meshes.size()))
+    throw std::runtime_error("render: " + grains_csv.path.string() + ": grain " + std::to_string(g) +
+                             " names variant " + std::to_string(variant) + " of " +
+                             std::to_string(variants.meshes.size()));
+  return variant;
+}
+
 void check_rigid_frame(const NumericCsv& grains_csv, const NumericCsv& frame) {
   if (frame.rows.size() != grains_csv.rows.size())
     throw std::runtime_error("render: " + frame.path.string() + " has " + std::to_string(frame.rows.size()) +
@@ -187,12 +204,8 @@ void check_rigid_frame(const NumericCsv& grains_csv, const NumericCsv& frame) {
 Eigen::Affine3d rigid_grain_place(const NumericCsv& grains_csv, const NumericCsv& frame, size_t g) {
   const auto& a = grains_csv.rows[g];
   const auto& b = frame.rows[g];
-  const Eigen::Quaterniond R(value(grains_csv, a, "qw"), value(grains_csv, a, "qx"), value(grains_csv, a, "qy"),
-                             value(grains_csv, a, "qz"));
-  const Eigen::Quaterniond q(value(frame, b, "qw"), value(frame, b, "qx"), value(frame, b, "qy"), value(frame, b, "qz"));
-  const Eigen::Vector3d drop(value(grains_csv, a, "drop_x"), value(grains_csv, a, "drop_y"), value(grains_csv, a, "drop_z"));
-  const Eigen::Vector3d c0(value(grains_csv, a, "centre_x"), value(grains_csv, a, "centre_y"), value(grains_csv, a, "centre_z"));
-  const Eigen::Vector3d c(value(frame, b, "x"), value(frame, b, "y"), value(frame, b, "z"));
+  const Eigen::Quaterniond R = quaternion(grains_csv, a), q = quaternion(frame, b);
+  const Eigen::Vector3d drop = xyz(grains_csv, a, "drop_"), c0 = xyz(grains_csv, a, "centre_"), c = xyz(frame, b, "");
   return Eigen::Translation3d(c) * q.normalized() * Eigen::Translation3d(drop - c0) * R.normalized() *
          Eigen::Scaling(value(grains_csv, a, "swell"));
 }
@@ -205,7 +218,7 @@ std::vector<SoftGrain> soft_run_grains(const NumericCsv& grains_csv, const Numer
   std::vector<SoftGrain> grains;
   size_t row = 0;
   for (size_t g = 0; g < grains_csv.rows.size(); ++g) {
-    const int variant = variant_of(grains_csv, g, variants);
+    const int variant = grain_variant(grains_csv, g, variants);
     const grains::VolumeMesh& simulation = variants.simulation[variant];
     const grains::Vertices x = simulation_vertices(frame, g, simulation.V.rows(), row);
     if (!parked_too && !in_scene(frame, frame.rows[row - 1])) continue;

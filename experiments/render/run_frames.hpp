@@ -23,6 +23,9 @@ namespace rice::experiments {
 /// frames/frame_NNNN.csv of the run.
 std::filesystem::path run_frame_path(const std::filesystem::path& run, int frame);
 
+/// N of a frame's file (frame_NNNN.csv, .png, ...).
+int frame_number(const std::filesystem::path& frame);
+
 /// The run's frames, in order; throws std::runtime_error when it has none.
 std::vector<std::filesystem::path> run_frames(const std::filesystem::path& run);
 
@@ -73,6 +76,9 @@ struct SoftGrain {
 /// std::runtime_error naming the file when the rows do not match the grains' variants.
 std::vector<SoftGrain> soft_run_grains(const NumericCsv& grains_csv, const NumericCsv& frame,
                                        const RunVariants& variants, bool parked_too = false);
+
+/// Grain g's variant (grains.csv); throws std::runtime_error when `variants` has no such one.
+int grain_variant(const NumericCsv& grains_csv, size_t g, const RunVariants& variants);
 
 /// Throws std::runtime_error when a rigid run's frame has not one row per grain of grains.csv.
 void check_rigid_frame(const NumericCsv& grains_csv, const NumericCsv& frame);

@@ -3,6 +3,7 @@
 # writes only the variants; bad input exits non-zero and leaves no output folder. Called by
 # CTest with -DRICE=<rice binary> -DOUT=<scratch folder>.
 file(REMOVE_RECURSE "${OUT}")
+include("${CMAKE_CURRENT_LIST_DIR}/../common/expect_same_files.cmake")
 
 function(run_rice expect_success)
   execute_process(COMMAND "${RICE}" ${ARGN} RESULT_VARIABLE result OUTPUT_QUIET ERROR_VARIABLE error)
@@ -25,20 +26,9 @@ list(LENGTH files count)
 if(count LESS 13)
   message(FATAL_ERROR "expected 4 files per grain and grains.csv, found ${files}")
 endif()
-foreach(name ${files})
-  if(name STREQUAL "run_info.txt")  # holds timings
-    continue()
-  endif()
-  foreach(pair "a;b" "c;d")
-    list(GET pair 0 first)
-    list(GET pair 1 second)
-    execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${OUT}/${first}/${name}" "${OUT}/${second}/${name}"
-                    RESULT_VARIABLE different)
-    if(different)
-      message(FATAL_ERROR "same seed, different ${name} (runs ${first} and ${second})")
-    endif()
-  endforeach()
-endforeach()
+list(REMOVE_ITEM files run_info.txt)  # holds timings
+expect_same("${OUT}/a" "${OUT}/b" "same seed on one thread, two runs" ${files})
+expect_same("${OUT}/c" "${OUT}/d" "same seed on two threads, two runs" ${files})
 
 run_rice(TRUE grains --cultivar aromatic --count 50 --variants 2 --no-sections --out "${OUT}/instanced")
 file(GLOB variant_meshes "${OUT}/instanced/variant_*.ply")

@@ -36,7 +36,11 @@ for rule in $(printf "%s\n" "${expected[@]}" | sort -u); do
   [ "$got" -eq "$want" ] || { echo "$want '$rule' jobs expected completed in Slurm's records, $got found" >&2; exit 1; }
 done
 
-# The same bytes as the local run.
+# The same files, with the same bytes, as the local run.
+outputs() { (cd "$1" && find heap heap-dry video-heap video-heap-dry video-parts -type f ! -name '.*' | sort); }
+outputs "$out/local" > "$out/local.files"
+outputs "$out/slurm" | cmp -s - "$out/local.files" ||
+  { echo "the Slurm run wrote other files than the local run" >&2; exit 1; }
 compared=0
 while IFS= read -r file; do
   case $file in
@@ -45,8 +49,5 @@ while IFS= read -r file; do
     *) cmp -s "$out/local/$file" "$out/slurm/$file" ;;
   esac || { echo "the Slurm run's $file differs from the local run's" >&2; exit 1; }
   compared=$((compared + 1))
-done < <(cd "$out/local" && find heap heap-dry video-heap video-heap-dry video-parts -type f ! -name '.*' | sort)
-[ "$(cd "$out/slurm" && find heap heap-dry video-heap video-heap-dry video-parts -type f ! -name '.*' | wc -l)" -eq \
-  "$(cd "$out/local" && find heap heap-dry video-heap video-heap-dry video-parts -type f ! -name '.*' | wc -l)" ] ||
-  { echo "the Slurm run wrote other files than the local run" >&2; exit 1; }
+done < "$out/local.files"
 echo "workflow on Slurm: ${#expected[@]} jobs completed; $compared files equal to the local run's"
