@@ -671,7 +671,7 @@ void ContactSolver::update_bonds() {
 /// What carries over between steps: the contacts' states (anchors, sliding, the forces held
 /// in particle steps), the broad phase's sphere centres and time, the radii and their time,
 /// the centres, boxes and motions of sleeping bodies (not recomputed while they sleep: a run
-/// resumed with its parked grains' boxes left empty woke them), the collider impulses of the
+/// resumed with its parked grains' boxes left unset woke them), the collider impulses of the
 /// interval, the statistics (the deepest penetration so far) and the bonds. The broad phase's
 /// pairs are not kept, since every step starts with a broad phase (with them a 10,000-grain
 /// clump's checkpoint was 402 MB, without them 22.5 MB), and the rest is rebuilt each substep.
