@@ -15,7 +15,7 @@ namespace {
 
 
 TEST(Cdrf, QuadratureMatchesTheFourierSeries) {
-  for (double sigma : {0.05, 0.2, 0.5, 1.0, 2.0, 4.0, 6.0}) {
+  for (double sigma : {0.01, 0.05, 0.2, 0.5, 1.0, 2.0, 4.0, 6.0}) {
     for (double c = -1.0; c <= 1.0; c += 0.125) {
       EXPECT_NEAR(cdrf_integral(c, sigma), cdrf_series(c, sigma), 1e-12) << "cos theta " << c << ", sigma " << sigma;
     }
@@ -100,7 +100,12 @@ TEST(CdrfTable, NodesHoldTheIntegralAndTheZeroWidthColumnIsExact) {
   const CdrfTable table(33, 17);
   EXPECT_NEAR(table(0.3, 0.0), 0.3, 1e-15);
   EXPECT_EQ(table(-0.3, 0.0), 0.0);
-  EXPECT_NEAR(table(1.0, CdrfTable::kSigmaMax * 5 / 16), cdrf_integral(1.0, CdrfTable::kSigmaMax * 5 / 16), 1e-15);
+  for (const double c : {-1.0, -0.25, 0.0, 0.5, 1.0})
+    for (const int j : {1, 5, 16}) {
+      const double sigma = CdrfTable::kSigmaMax * j / 16;
+      EXPECT_EQ(table(c, sigma), cdrf_series(c, sigma));
+      EXPECT_NEAR(table(c, sigma), cdrf_integral(c, sigma), 1e-12);
+    }
   EXPECT_EQ(table(0.5, 100.0), table(0.5, CdrfTable::kSigmaMax));  // clamped beyond σ_max
 }
 

@@ -112,6 +112,47 @@ TEST(SmoothedNormals, FollowTheSurfaceUnderItsBumps) {
   EXPECT_THROW(smoothed_vertex_normals(sphere.V, sphere.F, -1.0), std::invalid_argument);
 }
 
+// The smoothing's hash grid finds every vertex of the ball and its tabulated Gaussian is the
+// Gaussian: on a bumpy sphere of 10,242 vertices it equals the sum over all vertex pairs,
+// written out here, to a thousandth of a degree in the normals and, in the curvature, to 1e-4
+// of the jitter's noise the smoothing leaves.
+TEST(SmoothedNormals, EqualTheSumOverAllVertexPairs) {
+  test_support::TestMesh bumpy = test_support::icosphere(5);
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> jitter(-0.02, 0.02);
+  for (Eigen::Index v = 0; v < bumpy.V.rows(); ++v) bumpy.V.row(v) *= 1.0 + jitter(rng);
+  const MeshVertices& V = bumpy.V;
+  MeshVertices weighted = MeshVertices::Zero(V.rows(), 3);  // Σ of the faces' cross products
+  for (Eigen::Index f = 0; f < bumpy.F.rows(); ++f) {
+    const Eigen::RowVector3d a = V.row(bumpy.F(f, 0)), b = V.row(bumpy.F(f, 1)), c = V.row(bumpy.F(f, 2));
+    for (int k = 0; k < 3; ++k) weighted.row(bumpy.F(f, k)) += (b - a).cross(c - a);
+  }
+  const MeshVertices unit = vertex_normals(V, bumpy.F);
+  const Eigen::VectorXd H = vertex_mean_curvature(V, bumpy.F);
+  const double radius = 0.5;
+  const MeshVertices N = smoothed_vertex_normals(V, bumpy.F, radius);
+  const Eigen::VectorXd smoothed_H = smoothed_vertex_values(V, bumpy.F, H, radius);
+  double worst_degrees = 0.0, error_H = 0.0, left_H = 0.0;  // Σ squares: the difference, the noise left
+  for (Eigen::Index v = 0; v < V.rows(); v += 7) {
+    Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
+    double value = 0.0, weight = 0.0;
+    for (Eigen::Index u = 0; u < V.rows(); ++u) {
+      const double d2 = (V.row(u) - V.row(v)).squaredNorm();
+      if (d2 > radius * radius || unit.row(u).dot(unit.row(v)) <= 0.0) continue;
+      const double w = std::exp(-d2 / (2.0 * 0.25 * radius * radius));  // s = radius / 2
+      sum += w * weighted.row(u);
+      value += w * weighted.row(u).norm() * H(u);
+      weight += w * weighted.row(u).norm();
+    }
+    const double cosine = std::clamp(N.row(v).dot(sum.normalized()), -1.0, 1.0);
+    worst_degrees = std::max(worst_degrees, std::acos(cosine) * 180.0 / std::numbers::pi);
+    error_H += std::pow(smoothed_H(v) - value / weight, 2);
+    left_H += std::pow(value / weight - 1.0, 2);
+  }
+  EXPECT_LT(worst_degrees, 1e-3);
+  EXPECT_LT(error_H, 1e-8 * left_H);  // RMS: 1e-4 of the jitter's curvature the smoothing leaves
+}
+
 // The curvature of a bumpy sphere, averaged over the same ball, lies closer to the sphere's
 // 1/r than the mesh's own; a constant stays constant; a shading normal set on a prototype is
 // the one a hit reads.
