@@ -42,6 +42,23 @@ std::vector<std::filesystem::path> run_frames(const std::filesystem::path& run) 
   return frames;
 }
 
+namespace {
+
+/// Which of a run's `count` variants its grains.csv names (all of them without one): a run of
+/// 3 grains drawn from 8 variants shades 3 (0.8 s a variant at the default radius).
+std::vector<bool> variants_used(const std::filesystem::path& run, size_t count) {
+  if (!std::filesystem::exists(run / "grains.csv")) return std::vector<bool>(count, true);
+  const NumericCsv grains_csv = read_numeric_csv(run / "grains.csv");
+  std::vector<bool> used(count, false);
+  for (const std::vector<double>& row : grains_csv.rows) {
+    const double k = row[grains_csv.column("variant")];
+    if (k >= 0 && k < static_cast<double>(count)) used[static_cast<size_t>(k)] = true;
+  }
+  return used;
+}
+
+}  // namespace
+
 RunVariants read_run_variants(const std::filesystem::path& run, double shading_radius) {
   RunVariants variants;
   variants.shading_radius = shading_radius;
@@ -55,11 +72,16 @@ RunVariants read_run_variants(const std::filesystem::path& run, double shading_r
     throw std::runtime_error("render: " + (run / "variants").string() + " holds simulation meshes for " +
                              std::to_string(variants.simulation.size()) + " of its " +
                              std::to_string(variants.meshes.size()) + " variants");
+  const std::vector<bool> used = variants_used(run, variants.meshes.size());
+  variants.shading.resize(variants.meshes.size());
+  variants.embedding.resize(variants.simulation.size());
   Progress progress("render: variants, curvature and embeddings", static_cast<int>(variants.meshes.size()));
   for (size_t k = 0; k < variants.meshes.size(); ++k) {
-    variants.shading.push_back(grain_shading(variants.meshes[k].V, variants.meshes[k].F, shading_radius));
-    if (!variants.simulation.empty())
-      variants.embedding.push_back(grains::embed_points(variants.meshes[k].V, variants.simulation[k]));
+    if (used[k]) {
+      variants.shading[k] = grain_shading(variants.meshes[k].V, variants.meshes[k].F, shading_radius);
+      if (!variants.simulation.empty())
+        variants.embedding[k] = grains::embed_points(variants.meshes[k].V, variants.simulation[k]);
+    }
     progress.update(static_cast<int>(k + 1));
   }
   progress.finish();

@@ -51,7 +51,7 @@ struct SoftGrainDrawing {
 
 /// The run's variants and their shading (curvature, normals, thickness), computed once for
 /// every frame rendered; for a soft run also their simulation meshes and the render meshes'
-/// embeddings in them.
+/// embeddings in them. A variant no grain uses has empty shading and embedding.
 struct RunVariants {
   std::vector<grains::SurfaceMesh> meshes;
   std::vector<GrainShading> shading;

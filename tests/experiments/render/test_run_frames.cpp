@@ -42,6 +42,26 @@ fs::path soft_run() {
   return folder;
 }
 
+// Only the variants a run's grains use are shaded: two variants, every grain the second.
+TEST(RunFrames, OnlyTheVariantsTheGrainsUseAreShaded) {
+  const fs::path run = fs::path(RICE_TEST_SCRATCH) / "run-frames-used-variants";
+  fs::remove_all(run);
+  fs::create_directories(run / "variants");
+  grains::SurfaceMesh tetrahedron;
+  tetrahedron.V = (grains::Vertices(4, 3) << 0, 0, 0, 1e-3, 0, 0, 0, 1e-3, 0, 0, 0, 1e-3).finished();
+  tetrahedron.F = (grains::Triangles(4, 3) << 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3).finished();
+  for (const char* name : {"variant_0.ply", "variant_1.ply"}) {
+    std::ofstream out(run / "variants" / name);
+    grains::write_ply(out, tetrahedron);
+  }
+  std::ofstream(run / "grains.csv") << "grain,variant\n0,1\n1,1\n";
+  const RunVariants variants = read_run_variants(run);
+  ASSERT_EQ(variants.shading.size(), 2u);
+  EXPECT_EQ(variants.shading[0].normals.rows(), 0);
+  EXPECT_EQ(variants.shading[1].normals.rows(), 4);
+  EXPECT_EQ(variants.shading[1].curvature.size(), 4);
+}
+
 TEST(RunFrames, ASoftRunsGrainsAreTheRenderMeshesTheRunWrote) {
   const fs::path run = soft_run();
   const RunVariants variants = read_run_variants(run);
