@@ -1,4 +1,4 @@
-// A long `rice grains --count 200` run killed mid-way with SIGKILL, then interrupted with
+// A long `rice grains --count 60` run killed mid-way with SIGKILL, then interrupted with
 // SIGINT (Ctrl-C), leaves only complete, readable files in its output folder (no truncated
 // PLY or MEDIT, no partial CSV row, no half-written PNG, no temporary); Ctrl-C ends the run
 // with exit code 130 and a message saying where it stopped; a rerun into the same folder
@@ -134,7 +134,7 @@ TEST(InterruptedRuns, KilledOrInterruptedGrainRunsLeaveOnlyCompleteFilesAndRerun
   fs::remove_all(scratch);
   fs::create_directories(scratch);
   // Voxels twice the default size make each grain ~5x cheaper and change no file format.
-  const std::vector<std::string> run = {"--threads", "2",        "grains", "--count", "200", "--voxel-size",
+  const std::vector<std::string> run = {"--threads", "2",        "grains", "--count", "60", "--voxel-size",
                                         "1e-4",      "--out",    folder.string()};
 
   // SIGKILL once a dozen grains are written: no handler runs, nothing is cleaned up.
@@ -144,7 +144,7 @@ TEST(InterruptedRuns, KilledOrInterruptedGrainRunsLeaveOnlyCompleteFilesAndRerun
   kill(pid, SIGKILL);
   EXPECT_EQ(wait_exit(pid), 128 + SIGKILL);
   const auto killed_at = fs::file_time_type::clock::now();
-  EXPECT_LT(count_files(folder, ".ply"), 200) << "the run ended before it was killed";
+  EXPECT_LT(count_files(folder, ".ply"), 60) << "the run ended before it was killed";
   expect_only_complete_files(folder);
 
   // SIGINT once the rerun into the same folder has rewritten a few grains.
@@ -159,18 +159,18 @@ TEST(InterruptedRuns, KilledOrInterruptedGrainRunsLeaveOnlyCompleteFilesAndRerun
   EXPECT_LT(stop_seconds, 10.0) << "a hang guard; the latency itself is reported above";
   const std::string message = read_bytes(log);
   EXPECT_NE(message.find("interrupted by SIGINT during grains "), std::string::npos) << message;
-  EXPECT_NE(message.find("/200 done"), std::string::npos) << message;
+  EXPECT_NE(message.find("/60 done"), std::string::npos) << message;
   expect_only_complete_files(folder);
 
   // A rerun into the same folder completes.
   pid = spawn_rice(run, log);
   EXPECT_EQ(wait_exit(pid), 0) << read_bytes(log);
   expect_only_complete_files(folder);
-  EXPECT_EQ(count_files(folder, ".ply"), 200);
-  EXPECT_EQ(count_files(folder, ".mesh"), 200);
-  EXPECT_EQ(count_files(folder, "_section.png"), 200);
+  EXPECT_EQ(count_files(folder, ".ply"), 60);
+  EXPECT_EQ(count_files(folder, ".mesh"), 60);
+  EXPECT_EQ(count_files(folder, "_section.png"), 60);
   std::ifstream table(folder / "grains.csv");
-  EXPECT_EQ(std::count(std::istreambuf_iterator<char>(table), std::istreambuf_iterator<char>(), '\n'), 201);
+  EXPECT_EQ(std::count(std::istreambuf_iterator<char>(table), std::istreambuf_iterator<char>(), '\n'), 61);
   fs::remove_all(scratch);
 }
 
