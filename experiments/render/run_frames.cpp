@@ -44,16 +44,13 @@ std::vector<std::filesystem::path> run_frames(const std::filesystem::path& run) 
 
 namespace {
 
-/// Which of a run's `count` variants its grains.csv names (all of them without one): a run of
-/// 3 grains drawn from 8 variants shades 3 (0.8 s a variant at the default radius).
-std::vector<bool> variants_used(const std::filesystem::path& run, size_t count) {
-  if (!std::filesystem::exists(run / "grains.csv")) return std::vector<bool>(count, true);
+/// Which of `variants` (its meshes read) the run's grains.csv names (all of them without one):
+/// a run of 3 grains drawn from 8 variants shades 3 (0.8 s a variant at the default radius).
+std::vector<bool> variants_used(const std::filesystem::path& run, const RunVariants& variants) {
+  if (!std::filesystem::exists(run / "grains.csv")) return std::vector<bool>(variants.meshes.size(), true);
   const NumericCsv grains_csv = read_numeric_csv(run / "grains.csv");
-  std::vector<bool> used(count, false);
-  for (const std::vector<double>& row : grains_csv.rows) {
-    const double k = row[grains_csv.column("variant")];
-    if (k >= 0 && k < static_cast<double>(count)) used[static_cast<size_t>(k)] = true;
-  }
+  std::vector<bool> used(variants.meshes.size(), false);
+  for (size_t g = 0; g < grains_csv.rows.size(); ++g) used[grain_variant(grains_csv, g, variants)] = true;
   return used;
 }
 
@@ -72,7 +69,7 @@ RunVariants read_run_variants(const std::filesystem::path& run, double shading_r
     throw std::runtime_error("render: " + (run / "variants").string() + " holds simulation meshes for " +
                              std::to_string(variants.simulation.size()) + " of its " +
                              std::to_string(variants.meshes.size()) + " variants");
-  const std::vector<bool> used = variants_used(run, variants.meshes.size());
+  const std::vector<bool> used = variants_used(run, variants);
   variants.shading.resize(variants.meshes.size());
   variants.embedding.resize(variants.simulation.size());
   Progress progress("render: variants, curvature and embeddings", static_cast<int>(variants.meshes.size()));
