@@ -105,13 +105,6 @@ std::vector<ContactSolver::BodyPair> ContactSolver::body_candidates(const std::v
     std::vector<BodyPair> bodies;  ///< first and last index into `spheres`
   };
   const auto& bodies = model_.bodies;
-  const auto spheres_near = [&](int body, const Box& other, double reach, std::vector<int>& near) {
-    near.clear();
-    for (int s = 0; s < bodies[body].sphere_count(); ++s) {
-      const Vec3& c = centre_now_[sphere_offset_[body] + s];
-      if ((c - c.cwiseMax(other.lower).cwiseMin(other.upper)).norm() - radius(body, s) < reach) near.push_back(s);
-    }
-  };
   const auto find_in = [&](int chunk, Found& out) {
     std::vector<int> near_a, near_b;
     const size_t end = std::min(pairs.size(), static_cast<size_t>(chunk + 1) * kChunk);
@@ -119,9 +112,9 @@ std::vector<ContactSolver::BodyPair> ContactSolver::body_candidates(const std::v
       const auto [a, b] = pairs[k];
       if (bodies[a].asleep && bodies[b].asleep) continue;  // sleeping bodies do not touch each other
       const double reach = pad[a] + pad[b];
-      spheres_near(a, start_box_[b], reach, near_a);
+      spheres_near(a, centre_now_, start_box_[b], reach, near_a);
       if (near_a.empty()) continue;
-      spheres_near(b, start_box_[a], reach, near_b);
+      spheres_near(b, centre_now_, start_box_[a], reach, near_b);
       const int first = static_cast<int>(out.spheres.size());
       for (const int sa : near_a)
         for (const int sb : near_b) {
@@ -129,7 +122,13 @@ std::vector<ContactSolver::BodyPair> ContactSolver::body_candidates(const std::v
           if (d.norm() - radius(a, sa) - radius(b, sb) < reach) out.spheres.push_back({sa, sb});
         }
       const int last = static_cast<int>(out.spheres.size());
-      if (last > first) out.bodies.push_back({a, b, first, last});
+      if (last - first > bodies[a].sphere_count() + bodies[b].sphere_count()) {
+        // More pairs than a substep's search over both bodies' spheres checks: searched then.
+        out.spheres.resize(first);
+        out.bodies.push_back({a, b, kEachSubstep, kEachSubstep});
+      } else if (last > first) {
+        out.bodies.push_back({a, b, first, last});
+      }
     }
   };
   // A wave of chunks at a time: the lists a wave holds before they are joined stay small (all
@@ -150,11 +149,21 @@ std::vector<ContactSolver::BodyPair> ContactSolver::body_candidates(const std::v
       for (int c = 0; c < count; ++c) find_chunk(c);
     for (int c = 0; c < count; ++c) {
       const int offset = static_cast<int>(sphere_pairs_.size());
-      for (BodyPair p : wave[c].bodies) found.push_back({p.a, p.b, p.first + offset, p.last + offset});
+      for (BodyPair p : wave[c].bodies)
+        found.push_back(p.each_substep() ? p : BodyPair{p.a, p.b, p.first + offset, p.last + offset});
       sphere_pairs_.insert(sphere_pairs_.end(), wave[c].spheres.begin(), wave[c].spheres.end());
     }
   }
   return found;
+}
+
+void ContactSolver::spheres_near(int body, const std::vector<Vec3>& centres, const Box& box, double reach,
+                                 std::vector<int>& near) const {
+  near.clear();
+  for (int s = 0; s < model_.bodies[body].sphere_count(); ++s) {
+    const Vec3& c = centres[sphere_offset_[body] + s];
+    if ((c - c.cwiseMax(box.lower).cwiseMin(box.upper)).norm() - radius(body, s) < reach) near.push_back(s);
+  }
 }
 
 void ContactSolver::add_collider_candidates(double time, double span, std::vector<double>& pad,
@@ -309,13 +318,20 @@ void ContactSolver::begin_substep(double time, double h, const Positions& x_prev
   std::vector<ContactState>& previous = previous_states_;
   states_.clear();
   auto old = previous.begin();
+  // A state whose spheres are not in contact now loses its anchors and held forces, and is
+  // dropped once the interval's impulse sums it holds are reset: a sphere pair apart carries
+  // no friction state, and one that touches again starts sticking, as a new pair does. So the
+  // states of a pile are about its contacts, not every sphere pair that touched since its body
+  // pair came in reach (41 a grain against 3.2 contacts in a 3000-grain clump, all copied
+  // every substep; and 387 states against 242 contacts in the 27-grain pile of the test).
+  const auto carry_untouched = [&](ContactState& state) {
+    state.anchored = state.flown = false;
+    state.particle_force = 0.0;
+    state.friction_force.setZero();
+    if (state.interval_normal != 0.0 || !state.interval_friction.isZero(0.0)) states_.push_back(state);
+  };
   const auto state_of = [&](const std::array<int, 4>& key) {
-    for (; old != previous.end() && old->key < key; ++old) {
-      old->anchored = old->flown = false;
-      old->particle_force = 0.0;
-      old->friction_force.setZero();
-      states_.push_back(*old);
-    }
+    for (; old != previous.end() && old->key < key; ++old) carry_untouched(*old);
     if (old != previous.end() && old->key == key) {
       states_.push_back(*old++);
     } else {
@@ -326,13 +342,9 @@ void ContactSolver::begin_substep(double time, double h, const Positions& x_prev
   contacts_.clear();
   for (const BodyPair& pair : body_pairs_)
     if (may_touch(pair)) add_contacts(pair, state_of, touches);
-  for (; old != previous.end(); ++old) {
-    old->anchored = old->flown = false;
-    old->particle_force = 0.0;
-    old->friction_force.setZero();
-    states_.push_back(*old);
-  }
+  for (; old != previous.end(); ++old) carry_untouched(*old);
   statistics_.contacts = static_cast<int>(contacts_.size());
+  statistics_.states = static_cast<int>(states_.size());
   if (bonds_) bonds_->begin_substep(model_, touches, x_previous);
   if (!particle_steps_) return;
   particle_contacts_.clear();
@@ -416,20 +428,34 @@ void ContactSolver::add_contacts(const BodyPair& pair, StateOf& state_of, std::v
     }
     return;
   }
-  for (int i = pair.first; i < pair.last; ++i) {
-    const auto [sa, sb] = sphere_pairs_[i];
+  const auto add = [&](int sa, int sb) {
     const Vec3 d = start(pair.a, sa) - start(pair.b, sb);
     const double distance = d.norm();
     const double gap = distance - radius(pair.a, sa) - radius(pair.b, sb);
     if (gap >= (now(pair.a, sa) - start(pair.a, sa)).norm() + (now(pair.b, sb) - start(pair.b, sb)).norm() + margin)
-      continue;
+      return;
     const Vec3 normal = distance > 0.0 ? Vec3(d / distance) : Vec3::UnitZ();
     const std::array<int, 4> key{pair.a, pair.b, sa, sb};
     contacts_.push_back({state_of(key), normal, Vec3::Zero()});
     if (bonds_ && gap <= model_.contact.bond_distance)
       touches.push_back(
           {key, start(pair.a, sa) - radius(pair.a, sa) * normal, start(pair.b, sb) + radius(pair.b, sb) * normal});
+  };
+  if (!pair.each_substep()) {
+    for (int i = pair.first; i < pair.last; ++i) add(sphere_pairs_[i][0], sphere_pairs_[i][1]);
+    return;
   }
+  // The spheres of each body within this substep's reach of the other's box (a box holds its
+  // body's spheres, so a pair outside it is farther apart than its gap test allows), in the
+  // order a list from the broad phase would have them.
+  const double reach = motion_[pair.a] + motion_[pair.b] + margin;
+  std::vector<int>& near_a = near_[0];
+  std::vector<int>& near_b = near_[1];
+  spheres_near(pair.a, centre_start_, start_box_[pair.b], reach, near_a);
+  if (near_a.empty()) return;
+  spheres_near(pair.b, centre_start_, start_box_[pair.a], reach, near_b);
+  for (const int sa : near_a)
+    for (const int sb : near_b) add(sa, sb);
 }
 
 void ContactSolver::project(const Positions& x_previous) {

@@ -44,6 +44,7 @@ namespace rice::xpbd {
 struct ContactStatistics {
   int candidates = 0;           ///< sphere pairs and sphere–collider pairs from the broad phase
   int contacts = 0;             ///< speculative contacts of the last substep
+  int states = 0;               ///< contact states carried into the next substep (anchors, sliding, sums)
   double max_penetration = 0.0;  ///< largest −C over them at the end of the last substep [m]
   int bonds = 0;                 ///< cohesive bonds holding
   int bonds_broken = 0;          ///< body pairs whose bonds broke, since the start
@@ -118,10 +119,15 @@ class ContactSolver {
     Vec3 friction_force = Vec3::Zero();  ///< held in particle steps: its friction force λ_t then [N]
   };
   /// A body pair from the broad phase (or a body and a collider, b < 0) with its candidate
-  /// sphere pairs (s_a, s_b), sphere_pairs_[first, last), increasing.
+  /// sphere pairs (s_a, s_b), sphere_pairs_[first, last), increasing; or, for two bodies whose
+  /// reach holds more sphere pairs than they have spheres (fast ones: a falling clump's grains
+  /// paired 4600 sphere pairs a grain), first = last = kEachSubstep: its sphere pairs are found
+  /// in each substep its boxes may touch, within the substep's motion (add_contacts).
   struct BodyPair {
     int a, b, first, last;
+    bool each_substep() const { return first == kEachSubstep; }
   };
+  static constexpr int kEachSubstep = -1;
   static int collider_key(int collider) { return -1 - collider; }
   static bool is_collider(int b) { return b < 0; }
   static int collider_index(int b) { return -1 - b; }
@@ -151,6 +157,9 @@ class ContactSolver {
   void add_collider_candidates(double time, double span, std::vector<double>& pad, std::vector<BodyPair>& found,
                                bool moving_ones);
   void keep_states_in_reach();
+  /// The spheres s of `body` whose centre (in `centres`) is within `reach` + r_s of `box`, increasing.
+  void spheres_near(int body, const std::vector<Vec3>& centres, const Box& box, double reach,
+                    std::vector<int>& near) const;
   ContactPoints locate(const Contact& contact) const;
   double inverse_mass(const Contact& contact, const ContactPoints& p, const Vec3& direction) const;
   void push(const Contact& contact, const ContactPoints& p, const Vec3& impulse);
@@ -202,6 +211,7 @@ class ContactSolver {
   std::vector<Vec3> collider_impulses_;  ///< on each collider since the interval began [N s]
   double interval_time_ = 0.0;           ///< its length so far [s]
   std::vector<std::array<int, 2>> sphere_pairs_;
+  std::array<std::vector<int>, 2> near_;  ///< add_contacts' spheres near the other body, kept for their memory
   std::vector<ContactState> states_;
   std::vector<ContactState> previous_states_;  ///< begin_substep's merge: the last substep's states
   std::vector<int> sphere_offset_;                ///< first sphere of each body in the arrays below
