@@ -157,6 +157,8 @@ class ContactSolver {
   void add_collider_candidates(double time, double span, std::vector<double>& pad, std::vector<BodyPair>& found,
                                bool moving_ones);
   void keep_states_in_reach();
+  /// Whether every sphere in `box` is farther than `reach` from the collider at rest in `pose`.
+  static bool out_of_reach(const Collider& collider, const ColliderKeyframe& pose, const Box& box, double reach);
   /// The spheres s of `body` whose centre (in `centres`) is within `reach` + r_s of `box`, increasing.
   void spheres_near(int body, const std::vector<Vec3>& centres, const Box& box, double reach,
                     std::vector<int>& near) const;

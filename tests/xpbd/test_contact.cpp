@@ -69,8 +69,11 @@ TEST(ContactStates, APileKeepsTheStatesOfItsContactsOnly) {
   // another's spheres into a pile. The sphere pairs left behind carry nothing (no anchors, no
   // sliding, no impulse in the interval) and are dropped, so a pile at rest holds about one
   // state a contact. (They were kept while their body pair stayed in reach: 41 states a
-  // grain against 3.2 contacts in a 3000-grain clump, all copied every substep.)
+  // grain against 3.2 contacts in a 3000-grain clump, all copied every substep.) Friction
+  // high enough that no pair slides, since a sliding pair's states are kept.
   Model model;
+  model.contact.static_friction = 5.0;
+  model.contact.dynamic_friction = 4.0;
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> spin(-40.0, 40.0);
   for (int i = 0; i < 27; ++i) {
@@ -78,7 +81,7 @@ TEST(ContactStates, APileKeepsTheStatesOfItsContactsOnly) {
                                 Vec3((i % 3) * 8e-3, (i / 3 % 3) * 4e-3, 1e-3 + (i / 9) * 3e-3));
     model.rigid_bodies[model.bodies[grain].rigid_body].omega = Vec3(spin(rng), spin(rng), spin(rng));
   }
-  model.colliders.push_back(half_space(Vec3::UnitZ(), 0.0, 0.5, 0.4));
+  model.colliders.push_back(half_space(Vec3::UnitZ(), 0.0, 5.0, 4.0));
   Solver solver(model, scene_settings(BodyKind::kRigid, 1.0 / 30.0, 80));
   for (int k = 0; k < 45; ++k) solver.step();
   const ContactStatistics& at_rest = solver.contacts()->statistics();
