@@ -109,25 +109,30 @@ std::vector<ContactSolver::BodyPair> ContactSolver::body_candidates(const std::v
     std::vector<int> near_a, near_b;
     const size_t end = std::min(pairs.size(), static_cast<size_t>(chunk + 1) * kChunk);
     for (size_t k = static_cast<size_t>(chunk) * kChunk; k < end; ++k) {
-      const auto [a, b] = pairs[k];
+      const int a = pairs[k].first, b = pairs[k].second;
       if (bodies[a].asleep && bodies[b].asleep) continue;  // sleeping bodies do not touch each other
       const double reach = pad[a] + pad[b];
       spheres_near(a, centre_now_, start_box_[b], reach, near_a);
       if (near_a.empty()) continue;
       spheres_near(b, centre_now_, start_box_[a], reach, near_b);
-      const int first = static_cast<int>(out.spheres.size());
-      for (const int sa : near_a)
-        for (const int sb : near_b) {
-          const Vec3 d = centre_now_[sphere_offset_[a] + sa] - centre_now_[sphere_offset_[b] + sb];
-          if (d.norm() - radius(a, sa) - radius(b, sb) < reach) out.spheres.push_back({sa, sb});
-        }
-      const int last = static_cast<int>(out.spheres.size());
-      if (last - first > bodies[a].sphere_count() + bodies[b].sphere_count()) {
-        // More pairs than a substep's search over both bodies' spheres checks: searched then.
+      // Listed up to as many pairs as a substep's search over both bodies' spheres checks;
+      // past that, searched in each substep instead.
+      const size_t first = out.spheres.size(), most = bodies[a].sphere_count() + bodies[b].sphere_count();
+      const auto list = [&] {
+        for (const int sa : near_a)
+          for (const int sb : near_b) {
+            const Vec3 d = centre_now_[sphere_offset_[a] + sa] - centre_now_[sphere_offset_[b] + sb];
+            if (d.norm() - radius(a, sa) - radius(b, sb) >= reach) continue;
+            if (out.spheres.size() - first == most) return false;
+            out.spheres.push_back({sa, sb});
+          }
+        return true;
+      };
+      if (!list()) {
         out.spheres.resize(first);
         out.bodies.push_back({a, b, kEachSubstep, kEachSubstep});
-      } else if (last > first) {
-        out.bodies.push_back({a, b, first, last});
+      } else if (out.spheres.size() > first) {
+        out.bodies.push_back({a, b, static_cast<int>(first), static_cast<int>(out.spheres.size())});
       }
     }
   };
