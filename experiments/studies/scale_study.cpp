@@ -36,16 +36,22 @@ ScaleRun measure_run(const ScaleStudySettings& s, const std::string& body, int c
           contacts, stats.rows.back()[stats.column("awake")]};
 }
 
-void plot_scale(const std::filesystem::path& folder) {
+/// Time per grain-frame and its solves' part against grains, a line of each for every body run
+/// (a body not run has no line in the key).
+void plot_scale(const std::filesystem::path& folder, const std::vector<std::string>& bodies) {
+  std::string plot = "plot 'scale.csv'";
+  for (size_t k = 0; k < bodies.size(); ++k) {
+    const std::string rows = "(strcol(1) eq '" + bodies[k] + "' ? $2 : 1/0)";
+    const std::string point = bodies[k] == "rigid" ? "7" : "5", open_point = bodies[k] == "rigid" ? "6" : "4";
+    plot += std::string(k == 0 ? " " : ", \\\n     '' ") + "using " + rows + ":4 with linespoints pt " + point +
+            " title '" + bodies[k] + "', \\\n     '' using " + rows + ":7 with linespoints dt 2 pt " + open_point +
+            " title '" + bodies[k] + ", solves'";
+  }
   render_plot(folder, "scale", csv_plot_header("scale", 800, 500) + kLogLogAxes + R"(
 set xlabel 'grains'
 set ylabel 'wall time per grain-frame [µs]'
 set key top left
-plot 'scale.csv' using (strcol(1) eq 'rigid' ? $2 : 1/0):4 with linespoints pt 7 title 'rigid', \
-     '' using (strcol(1) eq 'soft' ? $2 : 1/0):4 with linespoints pt 5 title 'soft', \
-     '' using (strcol(1) eq 'rigid' ? $2 : 1/0):7 with linespoints dt 2 pt 6 title 'rigid, solves', \
-     '' using (strcol(1) eq 'soft' ? $2 : 1/0):7 with linespoints dt 2 pt 4 title 'soft, solves'
-)");
+)" + plot + "\n");
 }
 
 }  // namespace
@@ -94,7 +100,7 @@ void scale_study_command(const ScaleStudySettings& s, const std::filesystem::pat
       write_file_atomically(folder / "scale.csv", table.text());  // what is done so far, re-plottable
     }
   }
-  plot_scale(folder);
+  plot_scale(folder, s.bodies);
   write_file_atomically(folder / "run_info.txt",
                         run_info({{"command", "study scale"},
                                   {"scene", s.scene.string()},
