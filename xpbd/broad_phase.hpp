@@ -20,8 +20,8 @@ struct Box {
 };
 
 /// From this many boxes, overlapping_pairs traverses Embree's BVH instead of sweeping
-/// (bench_broad_phase, grain-sized boxes of a clump: the sweep 2.3 µs a box at 1000 and 13 µs
-/// at 34,000; the BVH 1.6 and 1.9 µs, but 1.7 µs at 100 against the sweep's 0.18).
+/// (bench_broad_phase, grain-sized boxes of a clump: the sweep 2.0 µs a box at 1000, 6.3 at
+/// 10,000 and 12.3 at 34,000; the BVH 2.2, 2.4 and 2.8 µs, but 1.8 µs at 100 against 0.12).
 constexpr int kBvhBroadPhaseFrom = 2000;
 
 /// Pairs (i, j), i < j, of overlapping boxes (closed: touching faces overlap), in increasing order.
