@@ -11,10 +11,10 @@
 
 namespace rice::experiments {
 
-Progress::Progress(std::string label, int total, double log_seconds)
-    : label_(std::move(label)), total_(total), log_seconds_(log_seconds), terminal_(isatty(fileno(stderr)) != 0),
+Progress::Progress(std::string label, int total, double log_seconds, int done_before)
+    : label_(std::move(label)), total_(total), done_before_(done_before), done_(done_before), log_seconds_(log_seconds), terminal_(isatty(fileno(stderr)) != 0),
       start_(std::chrono::steady_clock::now()), last_line_(start_) {
-  set_activity(label_ + " 0/" + std::to_string(total_) + " done");
+  set_activity(label_ + " " + std::to_string(done_) + "/" + std::to_string(total_) + " done");
 }
 
 void Progress::update(int done) {
@@ -22,8 +22,8 @@ void Progress::update(int done) {
   done_ = std::max(done_, done);
   set_activity(label_ + " " + std::to_string(done_) + "/" + std::to_string(total_) + " done");
   // Items finish out of order on several threads: the count shown never goes back.
-  if (done_ == 0) return;
-  const double left = seconds_since(start_) / done_ * (total_ - done_);
+  if (done_ == done_before_) return;
+  const double left = seconds_since(start_) / (done_ - done_before_) * (total_ - done_);
   if (terminal_) {
     std::fprintf(stderr, "\r%s %d/%d, %.0f s left   ", label_.c_str(), done_, total_, left);
   } else if (seconds_since(last_line_) >= log_seconds_) {

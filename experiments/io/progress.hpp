@@ -14,15 +14,17 @@ namespace rice::experiments {
 /// reported if the run is interrupted (interrupt.hpp). Thread-safe.
 class Progress {
  public:
-  /// `log_seconds`: the time between two lines into a log.
-  Progress(std::string label, int total, double log_seconds = 30.0);
+  /// `log_seconds`: the time between two lines into a log. `done_before`: items done before this
+  /// process began (a resumed run), left out of the pace the time left is estimated from.
+  Progress(std::string label, int total, double log_seconds = 30.0, int done_before = 0);
   void update(int done);
   void finish();
 
  private:
   std::string label_;
   int total_;
-  int done_ = 0;
+  int done_before_;
+  int done_;
   double log_seconds_;
   bool terminal_;
   bool logged_ = false;  ///< into a log: a line was written

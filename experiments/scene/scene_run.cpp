@@ -75,7 +75,7 @@ RunInfoEntries scene_entries(const Scene& scene, const World& world) {
 double step_frames(const Scene& scene, int first, const RunParts& parts, const std::filesystem::path& folder,
                    std::uint64_t scene_digest) {
   const int frames = scene.solver.frames;
-  Progress progress("scene frames", frames);
+  Progress progress("scene frames", frames, 30.0, first - 1);
   CheckpointClock checkpoints(scene.solver.checkpoint_every);
   const auto start = std::chrono::steady_clock::now();
   for (int frame = first; frame <= frames; ++frame) {

@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <string>
+#include <thread>
 
 namespace rice::experiments {
 namespace {
@@ -32,6 +34,19 @@ TEST(Progress, AShortLoopWritesNothingIntoALog) {
   short_loop.update(2);
   short_loop.finish();
   EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+}
+
+// A resumed run: the time left is paced by the items this process did, not by those done before
+// it began (999,000 items "done" in no time would promise the rest in a moment).
+TEST(Progress, AResumedLoopIsPacedByTheItemsItDidItself) {
+  testing::internal::CaptureStderr();
+  Progress resumed("frames", 1'000'000, 0.0, 999'000);
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  resumed.update(999'001);  // 20 ms an item, 999 items left: about 20 s
+  const std::string log = testing::internal::GetCapturedStderr();
+  const auto at = log.find("frames 999001/1000000, ");
+  ASSERT_NE(at, std::string::npos) << log;
+  EXPECT_GE(std::stod(log.substr(at + 23)), 19.0) << log;
 }
 
 }  // namespace
