@@ -280,23 +280,42 @@ bool fast_rice(const PathContext& c, const Material& m, const Medium* medium) {
   return !medium && m.kind == MaterialKind::kRice && c.settings.cdrf;
 }
 
-/// Direct light at a fast-rice point: the suns and quads by shadow rays that see through the
-/// grain itself (its light past the terminator and through it is the model's), f the
-/// material's whole response, diffuse and specular.
-Color fast_rice_direct(const PathContext& c, const ShadingPoint& hit, const Material& m, const Vector3f& n,
-                       const Vector3f& ng, const Vector3f& wo, PathSampler& sampler, PathCounters& counters) {
+/// The suns and quads seen from a surface point, each one sample and a shadow ray: Σ f(ω_i) L_i
+/// for f = `response` (f · cos θ_i as a function of ω_i). The shadow rays see through
+/// instance `ignore` (-1: none).
+template <typename Response>
+Color shadowed_light(const PathContext& c, const ShadingPoint& hit, const Vector3f& ng, int ignore,
+                     const Response& response, PathSampler& sampler, PathCounters& counters) {
   Color L = Color::Zero();
   const auto add = [&](const LightSample& l) {
     if ((l.weight <= 0.0f).all()) return;
-    const Color f = surface_response(m, *c.settings.cdrf, n, wo, l.direction, hit.curvature, hit.thickness);
+    const Color f = response(l.direction);
     if (!(f > 0.0f).any()) return;
     Ray shadow = leaving(c.scene, hit.position, ng, l.direction);
     shadow.t_max = l.distance * (1.0f - 1e-4f);
     ++counters.rays;
-    if (!c.scene.occluded(shadow, hit.instance)) L += f * l.weight;
+    if (!c.scene.occluded(shadow, ignore)) L += f * l.weight;
   };
   for_each_light_sample(c, hit.position, sampler, add);
   return L;
+}
+
+/// Direct light at a fast-rice point: shadow rays that see through the grain itself (its light
+/// past the terminator and through it is the model's), f the material's whole response,
+/// diffuse and specular.
+Color fast_rice_direct(const PathContext& c, const ShadingPoint& hit, const Material& m, const Vector3f& n,
+                       const Vector3f& ng, const Vector3f& wo, PathSampler& sampler, PathCounters& counters) {
+  const auto response = [&](const Vector3f& wi) {
+    return surface_response(m, *c.settings.cdrf, n, wo, wi, hit.curvature, hit.thickness);
+  };
+  return shadowed_light(c, hit, ng, hit.instance, response, sampler, counters);
+}
+
+/// Direct light at a metal point (normal n facing ω_o): the suns and quads through its GGX lobe.
+Color metal_direct(const PathContext& c, const ShadingPoint& hit, const Material& m, const Vector3f& n,
+                   const Vector3f& ng, const Vector3f& wo, PathSampler& sampler, PathCounters& counters) {
+  const auto response = [&](const Vector3f& wi) { return specular_term(m, n, wo, wi); };
+  return shadowed_light(c, hit, ng, -1, response, sampler, counters);
 }
 
 /// The next direction from a fast-rice point and its weight f cos / (lobe probability · pdf):
@@ -317,8 +336,7 @@ FastBounce fast_rice_bounce(const PathContext& c, const ShadingPoint& hit, const
   const auto [a, b] = sampler.pair();
   FastBounce next;
   if (lobe < kSpecular) {
-    const double w = sample_specular(n, wo, m.refractive_index, m.roughness, a, b, next.direction);
-    next.weight = Color::Constant(static_cast<float>(w / kSpecular));
+    next.weight = sample_specular(m, n, wo, a, b, next.direction) / static_cast<float>(kSpecular);
     return next;
   }
   if (u < kUniform) next.direction = Environment::direction(a, b).cast<float>();
@@ -411,6 +429,17 @@ Color trace(const PathContext& c, Ray ray, PathSampler& sampler, PathCounters& c
         ray = *out.ray;
         sun_seen = !out.suns_gathered;
       }
+    } else if (material.kind == MaterialKind::kMetal) {
+      const Vector3f wo = -ray.direction;
+      const Vector3f n = hit->shading_normal.dot(wo) > 0.0f ? hit->shading_normal : Vector3f(-hit->shading_normal);
+      radiance += throughput * metal_direct(c, *hit, material, n, ng, wo, sampler, counters);
+      const auto [a, b] = sampler.pair();
+      Vector3f next;
+      const Color weight = sample_specular(material, n, wo, a, b, next);
+      if (!(weight > 0.0f).any() || next.dot(ng) * wo.dot(ng) <= 0.0f) break;  // none, or into the surface
+      throughput *= weight;
+      sun_seen = quad_seen = false;  // the lights were gathered by metal_direct
+      ray = leaving(c.scene, hit->position, ng, next);
     } else {
       const Vector3f n = hit->shading_normal.dot(ray.direction) < 0.0f ? hit->shading_normal : Vector3f(-hit->shading_normal);
       const Vector3f n_geometric = ng.dot(ray.direction) < 0.0f ? ng : Vector3f(-ng);

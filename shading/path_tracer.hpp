@@ -10,7 +10,8 @@
 // decides between internal reflection and leaving. Out of the grain it goes on to other
 // grains, the bowl, the ground and the sky. At other surfaces (diffuse, glazed and a rice
 // material without a medium are taken as Lambertian of their albedo) it gathers the suns and
-// quad lights by shadow rays and bounces in a cosine-weighted direction. With a CDRF table
+// quad lights by shadow rays and bounces in a cosine-weighted direction; a metal gathers them
+// through its GGX lobe and bounces into that lobe. With a CDRF table
 // in the settings, a rice material without a medium is instead the fast model of
 // material.hpp: the CDRF and its translucency, lit by shadow rays that see through the grain
 // itself, bouncing into its response, front and back; paths of max_depth 1, 2, 3 are that

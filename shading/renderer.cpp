@@ -94,9 +94,9 @@ void shade_remaining_lights(const RenderScene& scene, const Lights& lights, cons
   if (has_specular(material)) {
     sampler.pair(index, pair++, a, b);
     Eigen::Vector3f wi;
-    const double weight = sample_specular(s.n, s.wo, material.refractive_index, material.roughness, a, b, wi);
-    if (weight > 0.0)
-      add(static_cast<float>(weight) * lights.environment.radiance(wi), wi, std::numeric_limits<float>::infinity(),
+    const Color weight = sample_specular(material, s.n, s.wo, a, b, wi);
+    if ((weight > 0.0f).any())
+      add(weight * lights.environment.radiance(wi), wi, std::numeric_limits<float>::infinity(),
           settings.ambient_occlusion);
   }
 }

@@ -54,7 +54,9 @@ std::vector<shading::Material> materials_of(double absorption_percent, RenderInt
           {.kind = shading::MaterialKind::kDiffuse, .albedo = shading::Color(0.3f, 0.29f, 0.27f)},
           {.kind = shading::MaterialKind::kGlazed, .albedo = shading::Color(0.75f, 0.75f, 0.73f), .roughness = 0.3},
           {.kind = shading::MaterialKind::kDiffuse, .albedo = shading::Color(0.55f, 0.4f, 0.25f)},
-          {.kind = shading::MaterialKind::kGlazed, .albedo = shading::Color(0.2f, 0.2f, 0.21f), .roughness = 0.15},
+          // Iron's reflectance at normal incidence (Real-Time Rendering, 4th ed., Table 9.2),
+          // brushed: a rough isotropic lobe.
+          {.kind = shading::MaterialKind::kMetal, .albedo = shading::Color(0.56f, 0.57f, 0.58f), .roughness = 0.25},
           {.kind = shading::MaterialKind::kGlazed, .albedo = shading::Color(0.8f, 0.79f, 0.76f), .roughness = 0.05}};
 }
 

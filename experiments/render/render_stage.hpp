@@ -17,7 +17,7 @@ namespace rice::experiments {
 /// The materials by index: 0 the grains' rice (the translucent model's, or the paper's CDRF),
 /// 1 the grey ground, 2 the dark glazed chawan, 3 the studio's table (a light linen), 4 its
 /// backdrop (a warm grey), then the colliders' (collider_drawing.hpp): 5 white plastic, 6 pale
-/// wood, 7 brushed steel (a dark coated stand-in: no metal model yet), 8 glazed white ceramic.
+/// wood, 7 steel (a rough metal), 8 glazed white ceramic.
 std::vector<shading::Material> materials_of(double absorption_percent, RenderIntegrator integrator);
 
 /// What every image of one command is seen and lit by, set by the first image rendered (a

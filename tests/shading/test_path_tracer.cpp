@@ -138,6 +138,60 @@ TEST(PathTracer, ConvexLambertianBodyReflectsItsAlbedo) {
   EXPECT_NEAR(mean_of(image), 0.5, 0.01);
 }
 
+// A convex metal body in a uniform sky reflects the sky by its lobe alone: its colour is its
+// Fresnel reflectance (F0 and more towards the rim) less the lobe's single-scattering loss (9%
+// for a white metal at α = 0.25: the Metal tests), one bounce to the sky; the direct renderer,
+// which samples the same lobe, sees the same.
+TEST(PathTracer, ConvexMetalBodyReflectsTheSkyAsTheRendererSeesIt) {
+  ThreeSpheres spheres;
+  const Color f0(0.2f, 0.5f, 0.8f);
+  const std::vector<Material> materials = {{.kind = MaterialKind::kMetal, .albedo = f0, .roughness = 0.25}};
+  const Camera camera = test_support::looking_down(0.02, 3.0);  // the middle sphere fills the frame
+  const Image traced = path_trace(spheres.scene, materials, {}, sky_of(1.0f), camera,
+                                  {.width = 8, .height = 8, .samples_per_pixel = 256});
+  const CdrfTable cdrf(17, 17);
+  const Image direct = render(spheres.scene, materials, sky_of(1.0f), camera, cdrf,
+                              {.width = 8, .height = 8, .samples_per_pixel = 256});
+  for (int channel = 0; channel < 3; ++channel) {
+    double traced_mean = 0.0, direct_mean = 0.0;
+    for (int y = 0; y < 8; ++y)
+      for (int x = 0; x < 8; ++x) {
+        traced_mean += traced.at(x, y)[channel] / 64.0;
+        direct_mean += direct.at(x, y)[channel] / 64.0;
+      }
+    EXPECT_GT(traced_mean, 0.88 * f0[channel]) << channel;
+    EXPECT_LT(traced_mean, f0[channel] + 0.15 * (1.0 - f0[channel])) << channel;
+    EXPECT_NEAR(traced_mean, direct_mean, 0.02) << channel;
+  }
+}
+
+// A metal plane seen from straight above under a sun at 60° from the zenith reflects it by its
+// lobe: L = E f cos θ_i at ω_o = z (0.17 F here; a Lambertian plane would be 0.5 F0), by both
+// integrators.
+TEST(PathTracer, AMetalPlaneReflectsTheSunByItsLobe) {
+  RenderScene scene;
+  test_support::TestMesh square{MeshVertices(4, 3), MeshTriangles(2, 3)};
+  square.V << -1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0;
+  square.F << 0, 1, 2, 0, 2, 3;
+  scene.add_instance(scene.add_prototype(square.V, square.F), Eigen::Affine3d::Identity(), 0);
+  scene.commit();
+  Lights lights;
+  const Eigen::Vector3f sun(std::sin(std::numbers::pi / 3.0), 0.0, std::cos(std::numbers::pi / 3.0));
+  lights.suns.push_back({.direction = sun, .irradiance = Color::Constant(std::numbers::pi_v<float>)});
+  const std::vector<Material> materials = {
+      {.kind = MaterialKind::kMetal, .albedo = Color(0.3f, 0.6f, 0.9f), .roughness = 0.25}};
+  const Eigen::Vector3f up(0.0f, 0.0f, 1.0f);
+  const Color expected = std::numbers::pi_v<float> * specular_term(materials[0], up, up, sun);
+  const Camera camera = test_support::looking_down(1.0, 1.0);  // views within 0.5° of the zenith
+  const Image traced =
+      path_trace(scene, materials, {}, lights, camera, {.width = 4, .height = 4, .samples_per_pixel = 16});
+  const CdrfTable cdrf(17, 17);
+  const Image direct = render(scene, materials, lights, camera, cdrf, {.width = 4, .height = 4, .samples_per_pixel = 16});
+  for (const Image* image : {&traced, &direct})
+    for (int channel = 0; channel < 3; ++channel)
+      EXPECT_NEAR(image->at(1, 1)[channel], expected[channel], 0.01 * expected[channel]) << channel;
+}
+
 // A Lambertian plane under a sun of irradiance π at 60° from the zenith: L = ρ cos 60° (the
 // shadow ray's estimate; the sky is black).
 TEST(PathTracer, LambertianPlaneUnderTheSun) {
