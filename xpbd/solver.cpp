@@ -73,6 +73,7 @@ Solver::Solver(Model& model, const SolverSettings& settings) : model_(model), se
   coloring_volume_ = color_constraints<4>(model.volumes, p.size());
   coloring_neo_hookean_ = color_constraints<4>(model.neo_hookean, p.size());
   tet_blocks_ = body_tet_blocks(model);
+  find_awake_runs();
   if (settings.method == Method::kVbd) {
     vbd_ = std::make_unique<VertexBlockDescent>(model);
     if (contacts_) contacts_->hold_in_particle_steps();
@@ -133,16 +134,8 @@ void Solver::step() {
 
 void Solver::substep(double h, bool end_of_interval) {
   ++timings_.substeps;
-  x_previous_ = model_.particles.x;
+  start_substep_state();
   predict(h);
-  lambda_distance_.assign(model_.distances.size(), 0.0);
-  lambda_volume_.assign(model_.volumes.size(), 0.0);
-  lambda_neo_hookean_.assign(model_.neo_hookean.size(), Vec2::Zero());
-  if (settings_.primal_correction)
-    impulse_neo_hookean_.assign(model_.neo_hookean.size(), Eigen::Matrix<double, 3, 4>::Zero());
-  lambda_attachment_.assign(model_.attachments.size(), Vec3::Zero());
-  if (rotation_.size() != model_.neo_hookean.size())
-    rotation_.assign(model_.neo_hookean.size(), Eigen::Quaterniond::Identity());
   if (settings_.diagnostics) x_predicted_ = model_.particles.x;
   // Contacts from the prediction, before vertex block descent's initial guess: the guess may
   // hold a body back where its body steps then carry it to the prediction (started from the
@@ -160,7 +153,9 @@ void Solver::substep(double h, bool end_of_interval) {
     contacts_->project(x_previous_);
   }
   Particles& p = model_.particles;
-  p.v = (p.x - x_previous_) / h;
+  for (const auto& [first, last] : awake_particles_)
+    p.v.middleRows(first, last - first) =
+        (p.x.middleRows(first, last - first) - x_previous_.middleRows(first, last - first)) / h;
   for (RigidBody& body : model_.rigid_bodies) update_velocities(body, h);
   if (contacts_) {
     contacts_->end_substep(end_of_interval);
@@ -169,21 +164,42 @@ void Solver::substep(double h, bool end_of_interval) {
   check_positions();
 }
 
+void Solver::start_substep_state() {
+  const Particles& p = model_.particles;
+  if (x_previous_.rows() != p.size()) x_previous_ = p.x;
+  for (const auto& [first, last] : awake_particles_)
+    x_previous_.middleRows(first, last - first) = p.x.middleRows(first, last - first);
+  lambda_distance_.assign(model_.distances.size(), 0.0);
+  lambda_volume_.assign(model_.volumes.size(), 0.0);
+  lambda_attachment_.assign(model_.attachments.size(), Vec3::Zero());
+  // A sleeping tet's multipliers stay zero (mark_sleeping): only the awake ones start afresh.
+  using Impulse = Eigen::Matrix<double, 3, 4>;
+  lambda_neo_hookean_.resize(model_.neo_hookean.size(), Vec2::Zero());
+  if (settings_.primal_correction) impulse_neo_hookean_.resize(model_.neo_hookean.size(), Impulse::Zero());
+  for (const auto& [first, last] : awake_tets_) {
+    std::fill(lambda_neo_hookean_.begin() + first, lambda_neo_hookean_.begin() + last, Vec2::Zero());
+    if (settings_.primal_correction)
+      std::fill(impulse_neo_hookean_.begin() + first, impulse_neo_hookean_.begin() + last, Impulse::Zero());
+  }
+  if (rotation_.size() != model_.neo_hookean.size())
+    rotation_.assign(model_.neo_hookean.size(), Eigen::Quaterniond::Identity());
+}
+
 void Solver::predict(double h) {
   // x̃ = x + h v + h² M⁻¹ f_ext with f_ext = m g + external forces (pinned particles stay).
   Particles& p = model_.particles;
   const bool has_forces = model_.external_forces.rows() != 0;
-  for (int i = 0; i < p.size(); ++i) {
-    if (p.w[i] == 0.0) {
-      p.v.row(i).setZero();
-      continue;
+  for (const auto& [first, last] : awake_particles_)
+    for (int i = first; i < last; ++i) {
+      if (p.w[i] == 0.0) {
+        p.v.row(i).setZero();
+        continue;
+      }
+      Vec3 acceleration = model_.gravity;
+      if (has_forces) acceleration += p.w[i] * model_.external_forces.row(i).transpose();
+      p.v.row(i) += h * acceleration.transpose();
+      p.x.row(i) += h * p.v.row(i);
     }
-    if (!asleep_particle_.empty() && asleep_particle_[i]) continue;
-    Vec3 acceleration = model_.gravity;
-    if (has_forces) acceleration += p.w[i] * model_.external_forces.row(i).transpose();
-    p.v.row(i) += h * acceleration.transpose();
-    p.x.row(i) += h * p.v.row(i);
-  }
   for (size_t r = 0; r < model_.rigid_bodies.size(); ++r) {
     RigidBody& body = model_.rigid_bodies[r];
     if (!asleep_rigid_.empty() && asleep_rigid_[r]) {
@@ -245,6 +261,40 @@ void Solver::mark_sleeping() {
     all_asleep_ = asleep_particle_[i] || model_.particles.w[i] == 0.0;
   for (size_t r = 0; r < model_.rigid_bodies.size() && all_asleep_; ++r)
     all_asleep_ = asleep_rigid_[r] || model_.rigid_bodies[r].inverse_mass == 0.0;
+  // What a substep's start did for every particle and tet, done here for the sleeping ones,
+  // which the substeps then skip: xⁿ = x, v = 0 (nothing moves them), multipliers zero.
+  Particles& p = model_.particles;
+  x_previous_ = p.x;
+  for (int i = 0; i < p.size(); ++i)
+    if (asleep_particle_[i]) p.v.row(i).setZero();
+  lambda_neo_hookean_.assign(model_.neo_hookean.size(), Vec2::Zero());
+  if (settings_.primal_correction)
+    impulse_neo_hookean_.assign(model_.neo_hookean.size(), Eigen::Matrix<double, 3, 4>::Zero());
+  find_awake_runs();
+}
+
+std::vector<std::pair<int, int>> Solver::awake_runs(const std::vector<char>& asleep, int count) {
+  std::vector<std::pair<int, int>> runs;
+  for (int i = 0; i < count; ++i) {
+    if (!asleep.empty() && asleep[i]) continue;
+    if (runs.empty() || runs.back().second != i) runs.emplace_back(i, i);
+    runs.back().second = i + 1;
+  }
+  return runs;
+}
+
+void Solver::find_awake_runs() {
+  const int particles = model_.particles.size(), tets = static_cast<int>(model_.neo_hookean.size());
+  awake_particles_ = awake_runs(asleep_particle_, particles);
+  // A tet sleeps with its body; without body blocks (tets of free particles) every tet is awake.
+  std::vector<char> asleep_tet;
+  if (!asleep_particle_.empty() && !tet_blocks_.empty()) {
+    asleep_tet.assign(tets, 0);
+    for (const TetBlock& block : tet_blocks_)
+      if (asleep_particle_[block.first_particle])
+        std::fill(asleep_tet.begin() + block.first, asleep_tet.begin() + block.last, 1);
+  }
+  awake_tets_ = awake_runs(asleep_tet, tets);
 }
 
 template <class Project>
@@ -465,8 +515,9 @@ void Solver::project_ground() {
 
 void Solver::check_positions() const {
   const Positions& x = model_.particles.x;
-  for (int i = 0; i < x.rows(); ++i)
-    if (!x.row(i).allFinite())
+  for (const auto& [first, last] : awake_particles_)  // a sleeping particle has not moved
+    for (int i = first; i < last; ++i)
+      if (!x.row(i).allFinite())
       throw SimulationError("step " + std::to_string(step_) + ", substep " +
                             std::to_string(substep_) + ": particle " + std::to_string(i) +
                             " has a non-finite position (check its velocity, mass and forces)");

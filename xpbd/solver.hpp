@@ -138,14 +138,23 @@ class Solver {
  private:
   /// `end_of_interval`: the last substep before the next broad phase.
   void substep(double h, bool end_of_interval);
+  /// xⁿ = x and zero multipliers for the awake particles and tets (the sleeping ones keep
+  /// what mark_sleeping set); the multipliers of springs, volumes and attachments all zero.
+  void start_substep_state();
   void predict(double h);
   /// Method::kVbd: keeps the prediction as y and starts from the adaptive initial guess of
   /// Chen et al. 2024: gravity's share of h² g that the particle's last acceleration
   /// showed, so a resting body is not pushed into what holds it.
   void start_vertex_block_descent(double h);
   /// Per particle and per rigid body: 1 when its body sleeps (sleeping.hpp); empty when
-  /// sleeping is off.
+  /// sleeping is off. Also the awake runs, and every particle's xⁿ and multipliers as a
+  /// substep's start leaves them, so that substeps touch the awake runs only.
   void mark_sleeping();
+  /// Runs [first, last) of the indices 0..count−1 whose `asleep` mark is 0 (all of them for
+  /// no marks).
+  static std::vector<std::pair<int, int>> awake_runs(const std::vector<char>& asleep, int count);
+  /// The awake runs of particles (awake_particles_) and of the body blocks' tets.
+  void find_awake_runs();
   void iterate(double h);
   void project_distance(int c, double h);
   void project_volume(int c, double h);
@@ -184,6 +193,11 @@ class Solver {
   Positions y_;                              ///< Method::kVbd: the substep's inertial prediction
   Positions v_previous_;                     ///< Method::kVbd: velocities at the last substep's start
   std::vector<char> asleep_particle_, asleep_rigid_;
+  /// The particles and the Neo-Hookean tets that may move this substep, as runs [first, last):
+  /// the per-substep passes over particles and multipliers walk these, so that a sleeping body
+  /// costs nothing a substep (a settled tenth of the rice cooker spent 1.3 s a frame on 3200
+  /// sleeping grains' copies and resets).
+  std::vector<std::pair<int, int>> awake_particles_, awake_tets_;
   bool all_asleep_ = false;  ///< every particle and rigid body that can move is asleep (mark_sleeping)
   SolverTimings timings_;
   Coloring coloring_distance_, coloring_volume_, coloring_neo_hookean_;
