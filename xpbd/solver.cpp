@@ -288,12 +288,14 @@ void Solver::find_awake_runs() {
   awake_particles_ = awake_runs(asleep_particle_, particles);
   // A tet sleeps with its body; without body blocks (tets of free particles) every tet is awake.
   std::vector<char> asleep_tet;
-  if (!asleep_particle_.empty() && !tet_blocks_.empty()) {
-    asleep_tet.assign(tets, 0);
-    for (const TetBlock& block : tet_blocks_)
-      if (asleep_particle_[block.first_particle])
-        std::fill(asleep_tet.begin() + block.first, asleep_tet.begin() + block.last, 1);
+  awake_blocks_.clear();
+  if (!asleep_particle_.empty()) asleep_tet.assign(tets, 0);
+  for (int k = 0; k < static_cast<int>(tet_blocks_.size()); ++k) {
+    const TetBlock& block = tet_blocks_[k];
+    if (asleep_particle_.empty() || !asleep_particle_[block.first_particle]) awake_blocks_.push_back(k);
+    else std::fill(asleep_tet.begin() + block.first, asleep_tet.begin() + block.last, 1);
   }
+  if (tet_blocks_.empty()) asleep_tet.clear();
   awake_tets_ = awake_runs(asleep_tet, tets);
 }
 
@@ -348,12 +350,13 @@ void Solver::project_neo_hookean_tets(double h) {
     for_each_constraint(coloring_neo_hookean_, [&](int c) { project_neo_hookean(c, h); });
     return;
   }
-  // A grain's few dozen tets take microseconds: one parallel loop over bodies per sweep, where
-  // colour by colour paid a barrier per colour (30 a sweep) and left threads yielding.
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, tet_blocks_.size(), 8), [&](const tbb::blocked_range<size_t>& range) {
+  // A grain's few dozen tets take microseconds: one parallel loop over the awake bodies per
+  // sweep, where colour by colour paid a barrier per colour (30 a sweep) and left threads
+  // yielding.
+  const tbb::blocked_range<size_t> blocks(0, awake_blocks_.size(), 8);
+  tbb::parallel_for(blocks, [&](const tbb::blocked_range<size_t>& range) {
     for (size_t k = range.begin(); k != range.end(); ++k) {
-      const TetBlock& block = tet_blocks_[k];
-      if (!asleep_particle_.empty() && asleep_particle_[block.first_particle]) continue;
+      const TetBlock& block = tet_blocks_[awake_blocks_[k]];
       for (int c = block.first; c < block.last; ++c) project_neo_hookean(c, h);
     }
   });

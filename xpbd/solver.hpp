@@ -153,7 +153,8 @@ class Solver {
   /// Runs [first, last) of the indices 0..count−1 whose `asleep` mark is 0 (all of them for
   /// no marks).
   static std::vector<std::pair<int, int>> awake_runs(const std::vector<char>& asleep, int count);
-  /// The awake runs of particles (awake_particles_) and of the body blocks' tets.
+  /// The awake runs of particles (awake_particles_) and of the body blocks' tets, and the
+  /// awake blocks.
   void find_awake_runs();
   void iterate(double h);
   void project_distance(int c, double h);
@@ -206,6 +207,7 @@ class Solver {
     int first, last, first_particle;
   };
   std::vector<TetBlock> tet_blocks_;  ///< body_tet_blocks
+  std::vector<int> awake_blocks_;     ///< the tet blocks of awake bodies (find_awake_runs)
   long step_ = 0;
   int substep_ = 0;
   StepDiagnostics diagnostics_;

@@ -44,6 +44,18 @@ Lights sky_of(float radiance) {
 
 double mean_of(const Image& image) { return mean_radiance(image); }
 
+/// The square [−1, 1]² at z = 0, facing +z, in material 0.
+struct SquareScene {
+  RenderScene scene;
+  SquareScene() {
+    test_support::TestMesh square{MeshVertices(4, 3), MeshTriangles(2, 3)};
+    square.V << -1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0;
+    square.F << 0, 1, 2, 0, 2, 3;
+    scene.add_instance(scene.add_prototype(square.V, square.F), Eigen::Affine3d::Identity(), 0);
+    scene.commit();
+  }
+};
+
 // A grain that scatters without absorbing, in a sky of radiance 1, sends every path back to the
 // sky: the image is 1 everywhere, within noise (the Fresnel boundary and the walk only reorder
 // where light goes).
@@ -169,12 +181,8 @@ TEST(PathTracer, ConvexMetalBodyReflectsTheSkyAsTheRendererSeesIt) {
 // lobe: L = E f cos θ_i at ω_o = z (0.17 F here; a Lambertian plane would be 0.5 F0), by both
 // integrators.
 TEST(PathTracer, AMetalPlaneReflectsTheSunByItsLobe) {
-  RenderScene scene;
-  test_support::TestMesh square{MeshVertices(4, 3), MeshTriangles(2, 3)};
-  square.V << -1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0;
-  square.F << 0, 1, 2, 0, 2, 3;
-  scene.add_instance(scene.add_prototype(square.V, square.F), Eigen::Affine3d::Identity(), 0);
-  scene.commit();
+  const SquareScene plane;
+  const RenderScene& scene = plane.scene;
   Lights lights;
   const Eigen::Vector3f sun(std::sin(std::numbers::pi / 3.0), 0.0, std::cos(std::numbers::pi / 3.0));
   lights.suns.push_back({.direction = sun, .irradiance = Color::Constant(std::numbers::pi_v<float>)});
@@ -195,12 +203,8 @@ TEST(PathTracer, AMetalPlaneReflectsTheSunByItsLobe) {
 // A Lambertian plane under a sun of irradiance π at 60° from the zenith: L = ρ cos 60° (the
 // shadow ray's estimate; the sky is black).
 TEST(PathTracer, LambertianPlaneUnderTheSun) {
-  RenderScene scene;
-  test_support::TestMesh square{MeshVertices(4, 3), MeshTriangles(2, 3)};
-  square.V << -1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0;
-  square.F << 0, 1, 2, 0, 2, 3;
-  scene.add_instance(scene.add_prototype(square.V, square.F), Eigen::Affine3d::Identity(), 0);
-  scene.commit();
+  const SquareScene plane;
+  const RenderScene& scene = plane.scene;
   Lights lights;
   const double theta = std::numbers::pi / 3.0;
   lights.suns.push_back({.direction = Eigen::Vector3f(std::sin(theta), 0.0, std::cos(theta)),
