@@ -62,8 +62,8 @@ inline double ggx_smith(double cos_o, double cos_i, double alpha) {
   return 1.0 / (1.0 + lambda(cos_o) + lambda(cos_i));
 }
 
-/// Schlick's Fresnel reflectance of a conductor, F0 + (1 − F0)(1 − cos θ)⁵ (Schlick 1994,
-/// eq. 24), for F0 its reflectance at normal incidence.
+/// Schlick's approximation of a conductor's Fresnel reflectance, F0 + (1 − F0)(1 − cos θ)⁵
+/// (Schlick 1994), for F0 its reflectance at normal incidence.
 inline Color schlick_reflectance(const Color& f0, double cos_theta) {
   const float m = static_cast<float>(std::pow(1.0 - std::clamp(cos_theta, 0.0, 1.0), 5.0));
   return f0 + (Color::Constant(1.0f) - f0) * m;

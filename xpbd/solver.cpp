@@ -521,9 +521,9 @@ void Solver::check_positions() const {
   for (const auto& [first, last] : awake_particles_)  // a sleeping particle has not moved
     for (int i = first; i < last; ++i)
       if (!x.row(i).allFinite())
-      throw SimulationError("step " + std::to_string(step_) + ", substep " +
-                            std::to_string(substep_) + ": particle " + std::to_string(i) +
-                            " has a non-finite position (check its velocity, mass and forces)");
+        throw SimulationError("step " + std::to_string(step_) + ", substep " + std::to_string(substep_) +
+                              ": particle " + std::to_string(i) +
+                              " has a non-finite position (check its velocity, mass and forces)");
   const auto& rigid = model_.rigid_bodies;
   for (size_t b = 0; b < rigid.size(); ++b)
     if (!rigid[b].x.allFinite() || !rigid[b].q().coeffs().allFinite())

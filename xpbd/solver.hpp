@@ -196,8 +196,8 @@ class Solver {
   std::vector<char> asleep_particle_, asleep_rigid_;
   /// The particles and the Neo-Hookean tets that may move this substep, as runs [first, last):
   /// the per-substep passes over particles and multipliers walk these, so that a sleeping body
-  /// costs nothing a substep (a settled tenth of the rice cooker spent 1.3 s a frame on 3200
-  /// sleeping grains' copies and resets).
+  /// costs nothing a substep (the settled frames of a 1000-grain rice cooker, 55 grains awake,
+  /// took 0.24 s with every particle copied and reset each substep, 0.18 s without).
   std::vector<std::pair<int, int>> awake_particles_, awake_tets_;
   bool all_asleep_ = false;  ///< every particle and rigid body that can move is asleep (mark_sleeping)
   SolverTimings timings_;

@@ -12,8 +12,8 @@
 namespace rice::experiments {
 
 Progress::Progress(std::string label, int total, double log_seconds, int done_before)
-    : label_(std::move(label)), total_(total), done_before_(done_before), done_(done_before), log_seconds_(log_seconds), terminal_(isatty(fileno(stderr)) != 0),
-      start_(std::chrono::steady_clock::now()), last_line_(start_) {
+    : label_(std::move(label)), total_(total), done_before_(done_before), done_(done_before), log_seconds_(log_seconds),
+      terminal_(isatty(fileno(stderr)) != 0), start_(std::chrono::steady_clock::now()), last_line_(start_) {
   set_activity(label_ + " " + std::to_string(done_) + "/" + std::to_string(total_) + " done");
 }
 

@@ -194,7 +194,8 @@ TEST(PathTracer, AMetalPlaneReflectsTheSunByItsLobe) {
   const Image traced =
       path_trace(scene, materials, {}, lights, camera, {.width = 4, .height = 4, .samples_per_pixel = 16});
   const CdrfTable cdrf(17, 17);
-  const Image direct = render(scene, materials, lights, camera, cdrf, {.width = 4, .height = 4, .samples_per_pixel = 16});
+  const Image direct =
+      render(scene, materials, lights, camera, cdrf, {.width = 4, .height = 4, .samples_per_pixel = 16});
   for (const Image* image : {&traced, &direct})
     for (int channel = 0; channel < 3; ++channel)
       EXPECT_NEAR(image->at(1, 1)[channel], expected[channel], 0.01 * expected[channel]) << channel;
