@@ -111,6 +111,30 @@ TEST_P(GrainContact, FallsAsleepOnAColliderAndStaysAsleep) {
   EXPECT_EQ(solver.timings().substeps - substeps, 30);
 }
 
+TEST(SleepingSoftGrains, ASleepingGrainKeepsItsPlaceAndRestsWhileItsNeighbourFalls) {
+  // Substeps walk the awake particles only; what they did for every particle (xⁿ = x, v from
+  // the substep's motion) mark_sleeping does once for the sleeping ones. A soft grain put to
+  // sleep in flight (its velocity still 1 m/s) stays where it is with zero velocity, while an
+  // awake one 5 cm away falls as free fall says.
+  Model model;
+  const int sleeping = add_grain(model, BodyKind::kSoft, Vec3(0.0, 0.0, 0.1));
+  const int falling = add_grain(model, BodyKind::kSoft, Vec3(0.05, 0.0, 0.1));
+  model.colliders.push_back(half_space(Vec3::UnitZ(), 0.0, 0.5, 0.4));
+  model.sleep.enabled = true;
+  const Body& body = model.bodies[sleeping];
+  model.particles.v.middleRows(body.first_particle, body.particle_count).col(2).setConstant(1.0);
+  model.bodies[sleeping].asleep = true;
+  const Positions start = model.particles.x;
+  const Vec3 falling_start = body_centre(model, falling);
+  Solver solver(model, scene_settings(BodyKind::kSoft, 1.0 / 30.0, 40));
+  solver.step();
+  const auto rows = [&](const Positions& x) { return x.middleRows(body.first_particle, body.particle_count); };
+  EXPECT_EQ(rows(model.particles.x), rows(start));
+  EXPECT_EQ(rows(model.particles.v), Positions::Zero(body.particle_count, 3));
+  const double t = 1.0 / 30.0, drop = 0.5 * 9.81 * t * t;  // 5.45 mm, from rest
+  EXPECT_NEAR(falling_start.z() - body_centre(model, falling).z(), drop, 0.05 * drop);
+}
+
 TEST_P(GrainContact, ASolverResumedFromItsStateStepsLikeOneNeverStopped) {
   // A grain falls from 1 cm onto another asleep on a plane, 0.5 m from the origin. A solver
   // that loads the first one's state after a step goes on to the same bits. Before, a
