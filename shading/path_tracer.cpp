@@ -370,96 +370,133 @@ Color sun_glints(const PathContext& c, const ShadingPoint& hit, const Material& 
   return L;
 }
 
-/// The radiance one path brings back along the camera ray.
-Color trace(const PathContext& c, Ray ray, PathSampler& sampler, PathCounters& counters) {
+/// A path on its way: the ray it follows next, what it has brought back and its throughput.
+struct Path {
+  Ray ray;
   Color radiance = Color::Zero(), throughput = Color::Constant(1.0f);
   // Whether a sun's disc, or a quad, met now is counted: after the camera and smooth events,
   // not after a diffuse bounce (whose shadow rays gathered them) nor, for suns, after a walk
   // that gathered them through the facets.
   bool sun_seen = true, quad_seen = true;
   int ignore = -1;  // the fast-rice grain the path just left, which it sees through
+  /// Goes on from `hit` along `direction` after a bounce that gathered the lights itself.
+  void bounce(const PathContext& c, const ShadingPoint& hit, const Vector3f& ng, const Vector3f& direction,
+              const Color& weight) {
+    throughput *= weight;
+    sun_seen = quad_seen = false;
+    ray = leaving(c.scene, hit.position, ng, direction);
+  }
+};
+
+/// At a fast-rice point: its direct light, then a bounce into its response. False: the path ends.
+bool fast_rice_event(const PathContext& c, const ShadingPoint& hit, const Material& m, Path& path,
+                     PathSampler& sampler, PathCounters& counters) {
+  const Vector3f ng = hit.geometric_normal, wo = -path.ray.direction;
+  const Vector3f n = hit.shading_normal.dot(wo) > 0.0f ? hit.shading_normal : ng;
+  path.radiance += path.throughput * fast_rice_direct(c, hit, m, n, ng, wo, sampler, counters);
+  const FastBounce next = fast_rice_bounce(c, hit, m, n, wo, sampler);
+  if (!(next.weight > 0.0f).any()) return false;
+  path.bounce(c, hit, ng, next.direction, next.weight);
+  path.ignore = hit.instance;
+  return true;
+}
+
+/// At a grain's boundary met from outside: the suns' glints, then reflection off it or a walk
+/// inside it by the Fresnel odds. False: the path ends.
+bool grain_boundary_event(const PathContext& c, const ShadingPoint& hit, const Material& m, const Medium& medium,
+                          Path& path, PathSampler& sampler, PathCounters& counters) {
+  const Vector3f ng = hit.geometric_normal;
+  const Vector3d d = path.ray.direction.cast<double>(), n = ng.cast<double>();
+  const double cos_outside = -d.dot(n);
+  const bool glints = c.settings.rough_sun_glints && !c.suns.empty();
+  if (glints) {
+    const Vector3f wo = -path.ray.direction, shading = hit.shading_normal.dot(wo) > 0.0f ? hit.shading_normal : ng;
+    path.radiance += path.throughput * sun_glints(c, hit, m, medium, shading, ng, wo, sampler, counters);
+  }
+  const auto [a, unused] = sampler.pair();
+  path.sun_seen = path.quad_seen = true;
+  if (a < fresnel_reflectance(cos_outside, medium.refractive_index)) {
+    path.ray = leaving(c.scene, hit.position, ng, (d + 2.0 * cos_outside * n).normalized().cast<float>());
+    path.sun_seen = !glints;  // the suns' reflection is the glints' above
+    return true;
+  }
+  const WalkExit out = walk(c, hit.instance, medium, hit.position, ng, refract(d, n, medium.refractive_index),
+                            path.throughput, path.radiance, sampler, counters);
+  if (!out.ray) return false;
+  path.ray = *out.ray;
+  path.sun_seen = !out.suns_gathered;
+  return true;
+}
+
+/// At a metal point: its direct light through the lobe, then a bounce into the lobe. False:
+/// the path ends (no sample, or one into the surface).
+bool metal_event(const PathContext& c, const ShadingPoint& hit, const Material& m, Path& path, PathSampler& sampler,
+                 PathCounters& counters) {
+  const Vector3f ng = hit.geometric_normal, wo = -path.ray.direction;
+  const Vector3f n = hit.shading_normal.dot(wo) > 0.0f ? hit.shading_normal : Vector3f(-hit.shading_normal);
+  path.radiance += path.throughput * metal_direct(c, hit, m, n, ng, wo, sampler, counters);
+  const auto [a, b] = sampler.pair();
+  Vector3f next;
+  const Color weight = sample_specular(m, n, wo, a, b, next);
+  if (!(weight > 0.0f).any() || next.dot(ng) * wo.dot(ng) <= 0.0f) return false;
+  path.bounce(c, hit, ng, next, weight);
+  return true;
+}
+
+/// At a Lambertian point: its direct light, then a cosine-weighted bounce. False: the path ends.
+bool lambertian_event(const PathContext& c, const ShadingPoint& hit, const Material& m, Path& path,
+                      PathSampler& sampler, PathCounters& counters) {
+  const Vector3f d = path.ray.direction, ng = hit.geometric_normal;
+  const Vector3f n = hit.shading_normal.dot(d) < 0.0f ? hit.shading_normal : Vector3f(-hit.shading_normal);
+  const Vector3f n_geometric = ng.dot(d) < 0.0f ? ng : Vector3f(-ng);
+  path.radiance += path.throughput * direct_light(c, hit, n, m.albedo, sampler, counters);
+  const auto [a, b] = sampler.pair();
+  const Vector3f next = cosine_direction(n, a, b);
+  if (next.dot(n_geometric) <= 0.0f) return false;  // under the geometric surface: no light comes that way
+  path.bounce(c, hit, n_geometric, next, m.albedo);
+  return true;
+}
+
+/// The radiance one path brings back along the camera ray.
+Color trace(const PathContext& c, Ray ray, PathSampler& sampler, PathCounters& counters) {
+  Path path{ray};
   ++counters.paths;
   for (int depth = 0;; ++depth) {
     ++counters.rays;
-    const std::optional<ShadingPoint> hit = c.scene.intersect(ray, ignore);
-    ignore = -1;
-    if (quad_seen) radiance += throughput * quad_light(c, ray, hit ? hit->t : std::numeric_limits<float>::infinity());
+    const std::optional<ShadingPoint> hit = c.scene.intersect(path.ray, path.ignore);
+    path.ignore = -1;
+    if (path.quad_seen)
+      path.radiance +=
+          path.throughput * quad_light(c, path.ray, hit ? hit->t : std::numeric_limits<float>::infinity());
     if (!hit) {
-      radiance += throughput * (c.lights.environment.radiance(ray.direction) +
-                                (sun_seen ? sun_discs(c, ray.direction) : Color::Zero()));
+      path.radiance += path.throughput * (c.lights.environment.radiance(path.ray.direction) +
+                                          (path.sun_seen ? sun_discs(c, path.ray.direction) : Color::Zero()));
       break;
     }
     if (depth == c.settings.max_depth) break;  // the last ray was traced for the lights it meets
-    const Vector3f ng = hit->geometric_normal;
     const Medium* medium = medium_of(c, hit->material);
     const Material& material = c.materials[hit->material];
     const bool fast = fast_rice(c, material, medium);
-    if ((medium || fast) && ray.direction.dot(ng) > 0.0f) {
+    if ((medium || fast) && path.ray.direction.dot(hit->geometric_normal) > 0.0f) {
       // Leaving a grain the path was not walking in: it started inside an overlapping one.
       // Pass through.
-      ray = leaving(c.scene, hit->position, ng, ray.direction);
+      path.ray = leaving(c.scene, hit->position, hit->geometric_normal, path.ray.direction);
       continue;
     }
-    if (fast) {
-      const Vector3f wo = -ray.direction, n = hit->shading_normal.dot(wo) > 0.0f ? hit->shading_normal : ng;
-      radiance += throughput * fast_rice_direct(c, *hit, material, n, ng, wo, sampler, counters);
-      const FastBounce next = fast_rice_bounce(c, *hit, material, n, wo, sampler);
-      if (!(next.weight > 0.0f).any()) break;
-      throughput *= next.weight;
-      sun_seen = quad_seen = false;
-      ray = leaving(c.scene, hit->position, ng, next.direction);
-      ignore = hit->instance;
-    } else if (medium) {
-      const Vector3d d = ray.direction.cast<double>(), n = ng.cast<double>();
-      const double cos_outside = -d.dot(n);
-      const bool glints = c.settings.rough_sun_glints && !c.suns.empty();
-      if (glints) {
-        const Vector3f wo = -ray.direction, shading = hit->shading_normal.dot(wo) > 0.0f ? hit->shading_normal : ng;
-        radiance += throughput * sun_glints(c, *hit, material, *medium, shading, ng, wo, sampler, counters);
-      }
-      const auto [a, unused] = sampler.pair();
-      sun_seen = quad_seen = true;
-      if (a < fresnel_reflectance(cos_outside, medium->refractive_index)) {
-        ray = leaving(c.scene, hit->position, ng, (d + 2.0 * cos_outside * n).normalized().cast<float>());
-        sun_seen = !glints;  // the suns' reflection is the glints' above
-      } else {
-        const WalkExit out = walk(c, hit->instance, *medium, hit->position, ng, refract(d, n, medium->refractive_index),
-                                  throughput, radiance, sampler, counters);
-        if (!out.ray) break;
-        ray = *out.ray;
-        sun_seen = !out.suns_gathered;
-      }
-    } else if (material.kind == MaterialKind::kMetal) {
-      const Vector3f wo = -ray.direction;
-      const Vector3f n = hit->shading_normal.dot(wo) > 0.0f ? hit->shading_normal : Vector3f(-hit->shading_normal);
-      radiance += throughput * metal_direct(c, *hit, material, n, ng, wo, sampler, counters);
-      const auto [a, b] = sampler.pair();
-      Vector3f next;
-      const Color weight = sample_specular(material, n, wo, a, b, next);
-      if (!(weight > 0.0f).any() || next.dot(ng) * wo.dot(ng) <= 0.0f) break;  // none, or into the surface
-      throughput *= weight;
-      sun_seen = quad_seen = false;  // the lights were gathered by metal_direct
-      ray = leaving(c.scene, hit->position, ng, next);
-    } else {
-      const Vector3f n = hit->shading_normal.dot(ray.direction) < 0.0f ? hit->shading_normal : Vector3f(-hit->shading_normal);
-      const Vector3f n_geometric = ng.dot(ray.direction) < 0.0f ? ng : Vector3f(-ng);
-      const Color albedo = material.albedo;
-      radiance += throughput * direct_light(c, *hit, n, albedo, sampler, counters);
-      const auto [a, b] = sampler.pair();
-      Vector3f next = cosine_direction(n, a, b);
-      if (next.dot(n_geometric) <= 0.0f) break;  // under the geometric surface: no light comes that way
-      throughput *= albedo;
-      sun_seen = quad_seen = false;
-      ray = leaving(c.scene, hit->position, n_geometric, next);
-    }
+    const bool goes_on = fast     ? fast_rice_event(c, *hit, material, path, sampler, counters)
+                         : medium ? grain_boundary_event(c, *hit, material, *medium, path, sampler, counters)
+                         : material.kind == MaterialKind::kMetal
+                             ? metal_event(c, *hit, material, path, sampler, counters)
+                             : lambertian_event(c, *hit, material, path, sampler, counters);
+    if (!goes_on) break;
     if (depth >= 3) {  // Russian roulette on the throughput
-      const float keep = std::min(0.95f, throughput.maxCoeff());
+      const float keep = std::min(0.95f, path.throughput.maxCoeff());
       const auto [u, unused] = sampler.pair();
       if (u >= keep) break;
-      throughput /= keep;
+      path.throughput /= keep;
     }
   }
-  return radiance;
+  return path.radiance;
 }
 
 void validate(const std::vector<Material>& materials, const std::vector<std::optional<Medium>>& media,
