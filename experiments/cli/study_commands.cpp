@@ -16,6 +16,7 @@
 #include "experiments/studies/render_study.hpp"
 #include "experiments/studies/scale_study.hpp"
 #include "experiments/studies/scene_convergence_study.hpp"
+#include "experiments/studies/sleep_study.hpp"
 #include "experiments/studies/soft_curvature_study.hpp"
 #include "experiments/studies/soft_instance_study.hpp"
 #include "experiments/studies/tet_quality_study.hpp"
@@ -46,6 +47,7 @@ class StudyCommands : public CommandFamily {
     add_convergence(study);
     add_scene_convergence(study);
     add_scale(study);
+    add_sleep(study);
     add_hard_cases(study);
   }
 
@@ -420,6 +422,32 @@ class StudyCommands : public CommandFamily {
     return settings;
   }
 
+  void add_sleep(CLI::App* study) {
+    CLI::App* c = study->add_subcommand(
+        "sleep", "the sleep rule's frames at rest and speed: wall time against the settled pile's shape");
+    SleepStudySettings& s = sleep_;
+    c->add_option("--out", sleep_out_, "output folder")->capture_default_str();
+    c->add_flag("--quick", sleep_quick_, "40 grains for 30 frames, two settings, for CI (seconds)");
+    c->add_option("--scene", s.scene, "the scene file")->capture_default_str();
+    c->add_option("--count", s.count, "grains")->check(number_in(1, 1e5))->capture_default_str();
+    c->add_option("--frames", s.frames, "frames of each run")->check(number_in(1, 1e5))->capture_default_str();
+    c->add_option("--sleep-frames", s.sleep_frames, "frames at rest before a grain sleeps, at the default speed")
+        ->check(number_in(1, 1e4))->capture_default_str();
+    c->add_option("--sleep-speeds", s.sleep_speeds, "speeds under which a grain is at rest [m/s], at the default frames")
+        ->check(number_in(0, 1, Ends::kOpenLow))->capture_default_str();
+    c->add_option("--run-threads", s.threads, "threads of each run; 0: the machine's")->check(number_in(0, 1024));
+    add(c, [this] { experiments::validate(sleep_settings()); },
+        [this] { sleep_study_command(sleep_settings(), sleep_out_); });
+  }
+
+  SleepStudySettings sleep_settings() const {
+    if (!sleep_quick_) return sleep_;
+    SleepStudySettings settings = SleepStudySettings::quick();
+    settings.scene = sleep_.scene;
+    settings.threads = sleep_.threads;
+    return settings;
+  }
+
   void add_hard_cases(CLI::App* study) {
     CLI::App* c = study->add_subcommand(
         "hard-cases", "soft grains at scale: the bunny pressed to 80% and released, 34,000 dropped into the cooker");
@@ -506,6 +534,9 @@ class StudyCommands : public CommandFamily {
   std::string scale_out_ = "out/scale";
   bool scale_quick_ = false;
   CLI::Option *scale_counts_ = nullptr, *scale_frames_ = nullptr;
+  SleepStudySettings sleep_;
+  std::string sleep_out_ = "out/sleep";
+  bool sleep_quick_ = false;
   HardCasesStudySettings hard_cases_;
   std::string hard_cases_out_ = "out/hard_cases";
   bool hard_cases_quick_ = false;

@@ -110,6 +110,12 @@ struct SceneEffects {
   bool cohesion = true;  ///< water-content bonds between touching grains
   bool damping = true;   ///< soft grains' Rayleigh damping τ from the soak (eq. 4); off: τ = 0
   bool sleeping = true;
+  /// A grain sleeps once every point of it moved slower than `sleep_speed` [m/s] over each of
+  /// `sleep_frames` frames in a row (xpbd::SleepSettings). `rice study sleep` puts 3 to 30
+  /// frames within the noise floor of a run without sleeping (the heap's and the rice cooker's
+  /// settled shapes) and 5 at 0.55 of 15's time in the cooker (docs/studies.md#sleep).
+  double sleep_speed = xpbd::SleepSettings{}.speed;
+  int sleep_frames = 5;
   bool render_meshes = false;  ///< also write each frame's deformed render meshes (large)
   bool paraview = false;       ///< also write each frame's grains for ParaView (paraview_observer.hpp)
 };

@@ -147,6 +147,8 @@ void read_effects(TomlSection section, SceneEffects& e) {
   e.cohesion = section.flag("cohesion");
   e.damping = section.flag("damping");
   e.sleeping = section.flag("sleeping");
+  e.sleep_speed = section.number("sleep_speed_m_s");
+  e.sleep_frames = static_cast<int>(section.integer("sleep_frames"));
   e.render_meshes = section.flag("render_meshes");
   e.paraview = section.flag("paraview");
   section.finish();

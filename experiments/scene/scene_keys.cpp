@@ -9,6 +9,7 @@
 
 #include "experiments/io/csv_table.hpp"
 #include "experiments/render/collider_drawing.hpp"
+#include "experiments/scene/scene.hpp"
 #include "grains/cultivar.hpp"
 #include "xpbd/model.hpp"
 
@@ -137,6 +138,10 @@ std::vector<SceneKey> effect_and_render_keys() {
       flag("effects", "cohesion", true, "water-content bonds between touching grains"),
       flag("effects", "damping", true, "soft grains' Rayleigh damping from the soak (eq. 4); false: none"),
       flag("effects", "sleeping", true, "grains at rest sleep until something touches them"),
+      number("effects", "sleep_speed_m_s", open_low(0, 1), xpbd::SleepSettings{}.speed,
+             "a grain is at rest in a frame when every point of it moved slower than this [m/s]"),
+      integer("effects", "sleep_frames", closed(1, 10000), static_cast<double>(SceneEffects{}.sleep_frames),
+              "frames at rest in a row before a grain sleeps"),
       flag("effects", "render_meshes", false, "also write each frame's deformed render meshes (frames/*.ply, large)"),
       flag("effects", "paraview", false,
            "also write each frame's grains as points for ParaView (paraview/*.vtp, grains.pvd): velocity, awake, bonds"),

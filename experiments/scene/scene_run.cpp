@@ -63,6 +63,8 @@ RunInfoEntries scene_entries(const Scene& scene, const World& world) {
           {"pull_off_force_in_weights", cell(world.pull_off_in_weights)},
           {"bond_heal_s", cell(world.model.contact.bond_heal_time)},
           {"sleeping", scene.effects.sleeping ? "on" : "off"},
+          {"sleep_speed_m_s", cell(scene.effects.sleep_speed)},
+          {"sleep_frames", cell(scene.effects.sleep_frames)},
           {"static_friction", cell(scene.effects.static_friction)},
           {"dynamic_friction", cell(scene.effects.dynamic_friction)},
           {"seed", std::to_string(scene.grains.seed)},

@@ -130,6 +130,8 @@ World build_world(const Scene& scene, Emitter& emitter) {
   if (!std::isnan(scene.grains.heal_time)) world.model.contact.bond_heal_time = scene.grains.heal_time;
   world.model.contact.radius_interval = scene.solver.radius_interval;
   world.model.sleep.enabled = scene.effects.sleeping;
+  world.model.sleep.speed = scene.effects.sleep_speed;
+  world.model.sleep.steps = scene.effects.sleep_frames;
   add_bodies(scene, world);
   return world;
 }

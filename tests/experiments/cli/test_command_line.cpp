@@ -69,6 +69,7 @@ std::vector<std::string> required_arguments(const std::vector<std::string>& path
       path == std::vector<std::string>{"study", "frame-cost"} || path == std::vector<std::string>{"point-cache"})
     return {"--run", RICE_TEST_SCRATCH};
   if (path == std::vector<std::string>{"study", "scale"}) return {"--scene", RICE_SCENES_DIR "/drop.toml"};
+  if (path == std::vector<std::string>{"study", "sleep"}) return {"--scene", RICE_SCENES_DIR "/rice_cooker.toml"};
   if (path == std::vector<std::string>{"study", "hard-cases"}) return {"--scenes", RICE_SCENES_DIR};
   return {};
 }

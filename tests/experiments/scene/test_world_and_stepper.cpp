@@ -1,7 +1,8 @@
 // The world builder (experiments/scene/world_builder.hpp), the world's grain operations and the
 // stepper: every grain is built parked and asleep beside the colliders in their order; the
-// effects a scene leaves off are off in the model; a rigid grain's render mesh rides its pose;
-// the stepper steps a frame with the scene's substeps and method.
+// effects a scene leaves off are off in the model, and its sleep rule reaches it; a rigid
+// grain's render mesh rides its pose; the stepper steps a frame with the scene's substeps and
+// method.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -65,6 +66,21 @@ TEST(WorldBuilder, EffectsTheSceneLeavesOffAreOffInTheModel) {
   EXPECT_EQ(off.model.contact.static_friction, 0.0);
   EXPECT_EQ(off.model.colliders[0].static_friction, 0.0);
   EXPECT_EQ(off.model.bodies[0].bond_strength, 0.0);
+}
+
+TEST(WorldBuilder, TheSleepRuleOfTheSceneFileReachesTheModel) {
+  const auto sleep_of = [](const std::vector<std::string>& overrides) {
+    const Scene scene = read_scene_file(std::filesystem::path(RICE_SCENES_DIR) / "shari.toml", overrides);
+    SpoutEmitter emitter(scene.emitter, scene.container);
+    return build_world(scene, emitter).model.sleep;
+  };
+  const xpbd::SleepSettings defaults = sleep_of({"grains.count=2", "grains.variants=1"});
+  EXPECT_EQ(defaults.steps, 5);  // the scenes' default (docs/studies.md#sleep), not the solver's 15
+  EXPECT_EQ(defaults.speed, 2e-3);
+  const xpbd::SleepSettings set =
+      sleep_of({"grains.count=2", "grains.variants=1", "effects.sleep_frames=7", "effects.sleep_speed_m_s=0.004"});
+  EXPECT_EQ(set.steps, 7);
+  EXPECT_EQ(set.speed, 0.004);
 }
 
 TEST(WorldBuilder, VertexBlockDescentTakesTheSoaksDampingAsStrainRateDampingUnlessAskedForThePapers) {

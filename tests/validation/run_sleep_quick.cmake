@@ -1,0 +1,38 @@
+# Runs `rice study sleep --quick` into OUT and checks its outputs: the reference (sleeping off),
+# its twin and a row per setting, the reference with no error and every grain awake at its end, the
+# setting that sleeps soonest with fewer grains awake than it, errors and times that are
+# numbers; the plot and the run info. Called by CTest (tests/CMakeLists.txt) with
+# -DRICE=<rice binary> -DSCENE=<experiments/scenes/rice_cooker.toml> -DOUT=<folder>.
+file(REMOVE_RECURSE "${OUT}")
+execute_process(COMMAND "${RICE}" study sleep --quick --scene "${SCENE}" --out "${OUT}"
+                RESULT_VARIABLE result OUTPUT_QUIET ERROR_VARIABLE error)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "rice study sleep --quick exited with ${result}: ${error}")
+endif()
+foreach(name sleep.csv sleep.png run_info.txt off/stats.csv twin/stats.csv frames_5/run_info.txt)
+  if(NOT EXISTS "${OUT}/${name}")
+    message(FATAL_ERROR "missing ${OUT}/${name}")
+  endif()
+endforeach()
+file(STRINGS "${OUT}/sleep.csv" rows)
+list(LENGTH rows count)
+if(NOT count EQUAL 6)
+  message(FATAL_ERROR "sleep.csv has ${count} lines, not a header, the reference, its twin and 3 settings")
+endif()
+list(GET rows 1 reference)
+list(GET rows 3 soonest)
+string(REPLACE "," ";" reference "${reference}")
+string(REPLACE "," ";" soonest "${soonest}")
+list(GET reference 0 knob)
+list(GET reference 3 grains)
+list(GET reference 6 reference_awake)
+list(GET reference 10 reference_error)
+list(GET soonest 2 frames)
+list(GET soonest 6 soonest_awake)
+list(GET soonest 10 soonest_error)
+if(NOT knob STREQUAL "off" OR NOT reference_error EQUAL 0 OR NOT reference_awake EQUAL grains)
+  message(FATAL_ERROR "the reference is not the run without sleeping, every grain awake, no error: ${reference}")
+endif()
+if(NOT frames EQUAL 5 OR NOT soonest_awake LESS reference_awake OR NOT soonest_error MATCHES "^[0-9.e+-]+$")
+  message(FATAL_ERROR "the run sleeping after 5 frames put no grain to sleep, or has no error: ${soonest}")
+endif()
