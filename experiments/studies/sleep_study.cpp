@@ -25,12 +25,11 @@ struct SleepRun {
   double simulation_s = 0.0, awake = 0.0, top = 0.0, kinetic_energy = 0.0, penetration = 0.0;
 };
 
-/// `sleep` holds "effects.*" overrides (none: the reference, sleeping off).
-SleepRun run_pile(const SleepStudySettings& s, std::vector<std::string> sleep, const std::filesystem::path& out) {
-  if (sleep.empty()) sleep.push_back("effects.sleeping=false");
-  sleep.push_back("grains.count=" + std::to_string(s.count));
-  sleep.push_back("solver.frames=" + std::to_string(s.frames));
-  run_scene_child({s.scene, sleep, s.threads}, out, "sleep: the run into " + out.string());
+/// The scene with the study's count and frames and the run's own `overrides` (as --set takes them).
+SleepRun run_pile(const SleepStudySettings& s, std::vector<std::string> overrides, const std::filesystem::path& out) {
+  overrides.push_back("grains.count=" + std::to_string(s.count));
+  overrides.push_back("solver.frames=" + std::to_string(s.frames));
+  run_scene_child({s.scene, overrides, s.threads}, out, "sleep: the run into " + out.string());
   const NumericCsv centres = read_numeric_csv(out / "final_centres.csv");
   const NumericCsv stats = read_numeric_csv(out / "stats.csv");
   SleepRun r;
@@ -56,9 +55,11 @@ plot 'sleep.csv' using (strcol(1) eq 'frames' ? $5 : 1/0):($11 * 1e6):3 with lab
      '' using (strcol(1) eq 'speed' ? $5 : 1/0):($11 * 1e6):2 with labels offset 1,-1 notitle, \
      '' using (strcol(1) eq 'frames' ? $5 : 1/0):($11 * 1e6) with linespoints pt 7 title 'heights, by frames at rest', \
      '' using (strcol(1) eq 'speed' ? $5 : 1/0):($11 * 1e6) with linespoints pt 5 title 'heights, by speed', \
-     '' using (strcol(1) eq 'frames' ? $5 : 1/0):($12 * 1e6) with linespoints dt 2 pt 6 title 'distances from the axis, by frames', \
+     '' using (strcol(1) eq 'frames' ? $5 : 1/0):($12 * 1e6) with linespoints dt 2 pt 6 \
+        title 'distances from the axis, by frames', \
      '' using (strcol(1) eq 'off' ? $5 : 1/0):(0) with points pt 9 ps 2 title 'sleeping off (the reference)', \
-     '' using (strcol(1) eq 'twin' ? $5 : 1/0):($11 * 1e6) with points pt 11 ps 2 title 'its twin, 1 substep more: the noise floor'
+     '' using (strcol(1) eq 'twin' ? $5 : 1/0):($11 * 1e6) with points pt 11 ps 2 \
+        title 'its twin, 1 substep more: the noise floor'
 )");
 }
 
@@ -101,7 +102,7 @@ void sleep_study_command(const SleepStudySettings& s, const std::filesystem::pat
   make_output_folder(folder);
   CsvTable table({"knob", "speed_m_s", "frames_at_rest", "grains", "simulation_s", "time_over_reference",
                   "awake_at_end", "top_m", "kinetic_energy_j", "max_penetration_m", "height_w1_m", "axis_w1_m"});
-  const SleepRun reference = run_pile(s, {}, folder / "off");
+  const SleepRun reference = run_pile(s, {"effects.sleeping=false"}, folder / "off");
   const auto add = [&](const std::string& knob, double speed, int frames, const SleepRun& r) {
     const double height_error = wasserstein_1(r.heights, reference.heights);
     const double axis_error = wasserstein_1(r.radii, reference.radii);
