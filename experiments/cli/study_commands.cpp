@@ -431,9 +431,9 @@ class StudyCommands : public CommandFamily {
     c->add_option("--scene", s.scene, "the scene file")->capture_default_str();
     c->add_option("--count", s.count, "grains")->check(number_in(1, 1e5))->capture_default_str();
     c->add_option("--frames", s.frames, "frames of each run")->check(number_in(1, 1e5))->capture_default_str();
-    c->add_option("--sleep-frames", s.sleep_frames, "frames at rest before a grain sleeps, at the default speed")
+    c->add_option("--sleep-frames", s.sleep_frames, "frames at rest before a grain sleeps, at the scene's speed")
         ->check(number_in(1, 1e4))->capture_default_str();
-    c->add_option("--sleep-speeds", s.sleep_speeds, "speeds under which a grain is at rest [m/s], at default frames")
+    c->add_option("--sleep-speeds", s.sleep_speeds, "speeds [m/s] under which a grain rests, at the scene's frames")
         ->check(number_in(0, 1, Ends::kOpenLow))->capture_default_str();
     c->add_option("--run-threads", s.threads, "threads of each run; 0: the machine's")->check(number_in(0, 1024));
     add(c, [this] { experiments::validate(sleep_settings()); },

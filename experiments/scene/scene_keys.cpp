@@ -138,7 +138,7 @@ std::vector<SceneKey> effect_and_render_keys() {
       flag("effects", "cohesion", true, "water-content bonds between touching grains"),
       flag("effects", "damping", true, "soft grains' Rayleigh damping from the soak (eq. 4); false: none"),
       flag("effects", "sleeping", true, "grains at rest sleep until something touches them"),
-      number("effects", "sleep_speed_m_s", open_low(0, 1), xpbd::SleepSettings{}.speed,
+      number("effects", "sleep_speed_m_s", open_low(0, 1), SceneEffects{}.sleep_speed,
              "a grain is at rest in a frame when every point of it moved slower than this [m/s]"),
       integer("effects", "sleep_frames", closed(1, 10000), static_cast<double>(SceneEffects{}.sleep_frames),
               "frames at rest in a row before a grain sleeps"),

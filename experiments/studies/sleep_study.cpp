@@ -13,7 +13,7 @@
 #include "experiments/io/gnuplot.hpp"
 #include "experiments/io/numeric_csv.hpp"
 #include "experiments/io/run_info.hpp"
-#include "experiments/scene/scene.hpp"
+#include "experiments/scene/scene_file.hpp"
 #include "experiments/studies/scene_child_run.hpp"
 
 namespace rice::experiments {
@@ -123,7 +123,7 @@ void sleep_study_command(const SleepStudySettings& s, const std::filesystem::pat
   const int substeps = static_cast<int>(info_number(folder / "off", "substeps"));
   add("twin", 0.0, 0,
       run_pile(s, {"effects.sleeping=false", "solver.substeps=" + std::to_string(substeps + 1)}, folder / "twin"));
-  const SceneEffects defaults;
+  const SceneEffects defaults = read_scene_file(s.scene).effects;  // the scene's own sleep rule
   std::optional<SleepRun> at_defaults;  // run once, in whichever sweep meets it first
   for (int frames : s.sleep_frames) {
     const SleepRun r = run_pile(s, {"effects.sleep_frames=" + std::to_string(frames)},

@@ -2,8 +2,8 @@
 // (xpbd::SleepSettings: a grain sleeps once every point of it moved slower than `speed` over
 // each of `frames` frames in a row). A scene (default: the rice cooker's fill and settling,
 // 1000 soft grains, the 105 frames before its paddle comes) runs once with sleeping off, the
-// reference, then once per setting: each count of frames at the default speed, each speed at
-// the default frames. Grain by grain two runs part (a pile is chaotic), so a run's error is
+// reference, then once per setting: each count of frames at the scene's speed, each speed at
+// the scene's frames. Grain by grain two runs part (a pile is chaotic), so a run's error is
 // how far its settled pile's shape is from the reference's: the 1-Wasserstein distance between
 // the grains' centre heights, and between their distances from the scene's axis. The
 // reference's twin, run with one substep more a frame and no sleep, gives the noise floor: a
