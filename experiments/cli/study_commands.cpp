@@ -464,6 +464,9 @@ class StudyCommands : public CommandFamily {
         ->check(number_in(0, 60, Ends::kOpenLow))->capture_default_str();
     c->add_option("--pressed-fraction", s.pressed_fraction, "the lid's bottom at this fraction of the settled height")
         ->check(number_in(0, 1, Ends::kOpenLow))->capture_default_str();
+    c->add_option("--press-seconds", s.press_seconds, "the lid's way down, from 15 cm to its lowest [s]")
+        ->check(number_in(0, 60, Ends::kOpenLow))->capture_default_str();
+    c->add_option("--seed", s.seed, "the grains' seed in both cases (0: the case files' own)")->check(seed_value());
     c->add_option("--run-threads", s.threads, "threads of each run; 0: the machine's")->check(number_in(0, 1024));
     add(c, [this] { experiments::validate(hard_cases_settings()); },
         [this] {
@@ -478,6 +481,9 @@ class StudyCommands : public CommandFamily {
     HardCasesStudySettings settings = HardCasesStudySettings::quick();
     settings.scenes = hard_cases_.scenes;
     settings.threads = hard_cases_.threads;
+    settings.pressed_fraction = hard_cases_.pressed_fraction;  // the same defaults as the full study's
+    settings.press_seconds = hard_cases_.press_seconds;
+    settings.seed = hard_cases_.seed;
     return settings;
   }
 

@@ -37,6 +37,9 @@ void StatsObserver::observe(const World& world, const Stepper& stepper, int fram
                   cell(contact.candidates), cell(contact.contacts), cell(contact.bonds), cell(contact.bonds_broken),
                   cell(contact.max_penetration), cell(xpbd::kinetic_energy(world.model)), cell(top),
                   cell(t.broad_phase), cell(t.narrow_phase), cell(t.solve()), cell(t.sleeping)});
+  // Each frame, so that a run stopped hours in (killed, or out of time) shows where its time
+  // went; a few kB a frame.
+  write_file_atomically(folder_ / "stats.csv", stats_.text());
 }
 
 void StatsObserver::end(const World& world, const Stepper& stepper, SceneReport& report) {

@@ -1,6 +1,7 @@
-// stats.csv of a run, a row per frame: wall time, awake grains, candidate pairs, contacts,
-// bonds (holding and broken so far), the deepest penetration, kinetic energy, the top grain
-// centre, and the frame's time in broad phase, narrow phase, solves and sleeping. At the end:
+// stats.csv of a run, a row per frame, written after each: wall time, awake grains, candidate
+// pairs, contacts, bonds (holding and broken so far), the deepest penetration, kinetic energy,
+// the top grain centre, and the frame's time in broad phase, narrow phase, solves and
+// sleeping. At the end:
 // the grains awake, the deepest overlaps, and the top centre just before the first collider's
 // removal (a mould taken away).
 #pragma once

@@ -48,15 +48,23 @@ bool passed(const HardCasesStudySettings& s, const CaseOutcome& c) {
   return c.finite && c.inverted == 0.0 && c.overlap < s.overlap_limit * c.thickness;
 }
 
-/// The lid's keyframes (TOML): parked until `start`, its bottom down at `bottom` 1 s later,
-/// held 0.5 s, back up 0.5 s after.
-std::string lid_keyframes(double start, double bottom) {
+/// The lid's keyframes (TOML): parked until `start`, its bottom down at `bottom` `press` seconds
+/// later, held 0.5 s, back up 0.5 s after.
+std::string lid_keyframes(double start, double bottom, double press) {
   const auto pose = [](double t, double z) {
     return "{ time_s = " + cell(t) + ", position_m = [0.0, 0.0, " + cell(z) + "] }";
   };
-  const double pressed = bottom + kLidHalfThickness;
-  return "[" + pose(0.0, kLidParked) + ", " + pose(start, kLidParked) + ", " + pose(start + 1.0, pressed) + ", " +
-         pose(start + 1.5, pressed) + ", " + pose(start + 2.0, kLidParked) + "]";
+  const double pressed = bottom + kLidHalfThickness, held = start + press;
+  return "[" + pose(0.0, kLidParked) + ", " + pose(start, kLidParked) + ", " + pose(held, pressed) + ", " +
+         pose(held + 0.5, pressed) + ", " + pose(held + 1.0, kLidParked) + "]";
+}
+
+/// The case's overrides: its grain count, fill and seed.
+std::vector<std::string> bunny_overrides(const HardCasesStudySettings& s) {
+  std::vector<std::string> overrides{"grains.count=" + std::to_string(s.bunny_grains),
+                                     "emitter.seconds=" + cell(s.fill_seconds)};
+  if (s.seed > 0) overrides.push_back("grains.seed=" + std::to_string(s.seed));
+  return overrides;
 }
 
 /// The bunny: a run to the press's start for the settled height H (the top centre plus half a
@@ -64,19 +72,19 @@ std::string lid_keyframes(double start, double bottom) {
 CaseOutcome bunny_pressed(const HardCasesStudySettings& s, const std::filesystem::path& folder) {
   const std::filesystem::path scene = s.scenes / "cases" / "bunny_pressed.toml";
   const double start = s.fill_seconds + 0.5, fps = 30.0;  // the case file's frame rate
-  std::vector<std::string> overrides{"grains.count=" + std::to_string(s.bunny_grains),
-                                     "emitter.seconds=" + cell(s.fill_seconds)};
-  SceneChildRun run{scene, overrides, s.threads};
-  run.overrides.push_back("solver.frames=" + std::to_string(static_cast<int>(std::lround(start * fps))));
+  const auto frames_to = [fps](double t) { return "solver.frames=" + std::to_string(std::lround(t * fps)); };
+  SceneChildRun run{scene, bunny_overrides(s), s.threads};
+  run.overrides.push_back(frames_to(start));
   run_scene_child(run, folder / "bunny_settled", "hard cases: the bunny's settling");
   const double top = info_number(folder / "bunny_settled", "top_centre_at_end_m");
   const double height = top + 0.5 * info_number(folder / "bunny_settled", "grain_thickness_m");
   if (height + 0.02 > kLidParked - kLidHalfThickness)
     throw std::runtime_error("hard cases: the bunny's pile reaches the parked lid");
 
-  run.overrides = overrides;
-  run.overrides.push_back("solver.frames=" + std::to_string(static_cast<int>(std::lround((start + 4.0) * fps))));
-  run.overrides.push_back("colliders.2.keyframes=" + lid_keyframes(start, s.pressed_fraction * height));
+  const double held = start + s.press_seconds;  // the lid at its lowest from here, for 0.5 s
+  run.overrides = bunny_overrides(s);
+  run.overrides.push_back(frames_to(held + 3.0));
+  run.overrides.push_back("colliders.2.keyframes=" + lid_keyframes(start, s.pressed_fraction * height, s.press_seconds));
   run_scene_child(run, folder / "bunny_pressed", "hard cases: the bunny's press");
   CaseOutcome c = read_outcome(folder / "bunny_pressed");
   const NumericCsv stats = read_numeric_csv(folder / "bunny_pressed" / "stats.csv");
@@ -84,7 +92,7 @@ CaseOutcome bunny_pressed(const HardCasesStudySettings& s, const std::filesystem
   c.overlap_pressed = 0.0;
   for (const std::vector<double>& row : stats.rows) {
     const double t = row[stats.column("time_s")];
-    if (t < start + 1.0 || t > start + 1.5) continue;
+    if (t < held || t > held + 0.5) continue;
     lowest = std::min(lowest, row[stats.column("top_m")]);
     c.overlap_pressed = std::max(c.overlap_pressed, row[stats.column("max_penetration_m")]);
   }
@@ -93,10 +101,11 @@ CaseOutcome bunny_pressed(const HardCasesStudySettings& s, const std::filesystem
 }
 
 CaseOutcome cooker_drop(const HardCasesStudySettings& s, const std::filesystem::path& folder) {
-  const SceneChildRun run{s.scenes / "cases" / "cooker_drop.toml",
-                          {"grains.count=" + std::to_string(s.cooker_grains),
-                           "solver.frames=" + std::to_string(s.cooker_frames)},
-                          s.threads};
+  SceneChildRun run{s.scenes / "cases" / "cooker_drop.toml",
+                    {"grains.count=" + std::to_string(s.cooker_grains),
+                     "solver.frames=" + std::to_string(s.cooker_frames)},
+                    s.threads};
+  if (s.seed > 0) run.overrides.push_back("grains.seed=" + std::to_string(s.seed));
   run_scene_child(run, folder / "cooker_drop", "hard cases: the cooker's drop");
   return read_outcome(folder / "cooker_drop");
 }
@@ -139,6 +148,8 @@ void validate(const HardCasesStudySettings& s) {
     throw std::invalid_argument("--fill-seconds must be in (0, 60]");
   if (!(s.pressed_fraction > 0.0 && s.pressed_fraction <= 1.0))
     throw std::invalid_argument("--pressed-fraction must be in (0, 1]");
+  if (!(s.press_seconds > 0.0 && s.press_seconds <= 60.0))
+    throw std::invalid_argument("--press-seconds must be in (0, 60]");
 }
 
 bool hard_cases_study_command(const HardCasesStudySettings& s, const std::filesystem::path& folder) {
@@ -158,6 +169,8 @@ bool hard_cases_study_command(const HardCasesStudySettings& s, const std::filesy
                                   {"scenes", s.scenes.string()},
                                   {"fill_seconds", cell(s.fill_seconds)},
                                   {"pressed_fraction", cell(s.pressed_fraction)},
+                                  {"press_seconds", cell(s.press_seconds)},
+                                  {"seed", s.seed > 0 ? std::to_string(s.seed) : "the case files'"},
                                   {"overlap_limit_of_thickness", cell(s.overlap_limit)},
                                   {"threads", s.threads > 0 ? cell(s.threads) : "the machine's"}}));
   return passed(s, bunny) && passed(s, cooker);

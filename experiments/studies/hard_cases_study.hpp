@@ -10,6 +10,7 @@
 // run_info.txt; each case's runs are in folders of their own.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 
 namespace rice::experiments {
@@ -17,9 +18,11 @@ namespace rice::experiments {
 struct HardCasesStudySettings {
   std::filesystem::path scenes = "experiments/scenes";  ///< the folder holding cases/
   int bunny_grains = 3600, cooker_grains = 34000;
-  double fill_seconds = 3.5;  ///< the bunny's fill; it settles 0.5 s, is pressed 1.5 s, rests 2 s
+  double fill_seconds = 3.5;  ///< the bunny's fill; it settles 0.5 s, then the lid comes down
   int cooker_frames = 90;
   double pressed_fraction = 0.8;  ///< the lid's bottom at this fraction of the settled height
+  double press_seconds = 1.0;     ///< the lid's way down, from 15 cm to that bottom [s]
+  std::uint64_t seed = 0;         ///< the grains' seed in both cases; 0: the case files' own
   double overlap_limit = 0.1;     ///< of the thickness
   int threads = 0;                ///< of each run; 0: the machine's
 

@@ -35,6 +35,12 @@ kill_and_resume() {
     echo "the killed run finished before the kill; no resume tested" >&2
     exit 1
   fi
+  # Its stats.csv holds the frames before the one written last, at least.
+  local rows=$(($(wc -l < "$killed/stats.csv") - 1))
+  if [ $rows -lt $((kill_at - 1)) ]; then
+    echo "the killed run's stats.csv holds $rows frames, not $((kill_at - 1))" >&2
+    exit 1
+  fi
   "$rice" --threads 2 run "$scene" "${settings[@]}" --out "$killed" --resume > "$killed.log"
   grep "resumed after frame" "$killed.log"
 
