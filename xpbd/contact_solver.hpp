@@ -174,9 +174,9 @@ class ContactSolver {
   size_t end_pair_substep(size_t first, bool end_of_interval, double& deepest);
   /// How far any point of body b can move in `span` seconds from `time`, with leeway for what
   /// contacts add: 1.5 s span + ½ |g| span², s the speed of its fastest point (rigid:
-  /// |v| + |ω| r_max; soft: of its sphere centres since the last broad phase, at the first the
-  /// fastest particle's). A sleeping body does not move.
-  double motion_bound(int b, double time, double span) const;
+  /// |v| + |ω| r_max; soft: of its sphere centres since the last broad phase, at the first or
+  /// when it was asleep then (`woken`) the fastest particle's). A sleeping body does not move.
+  double motion_bound(int b, double time, double span, bool woken) const;
   /// function(k) for k in [0, count), on TBB's threads when parallel_.
   template <class Function>
   void for_each_body(int count, const Function& function) const;
