@@ -49,11 +49,11 @@ void ContactSolver::find_candidates(double time, double span) {
   // Bodies whose centres were last computed asleep, before they are computed again: a grain
   // parked asleep and moved into the scene (an emitter's release) has no motion since the last
   // broad phase to go by, only its jump.
-  const std::vector<char> woken = centres_at_rest_;
+  const std::vector<char> asleep_then = centres_at_rest_;
   for_each_body(static_cast<int>(bodies.size()), [&](int b) { update_centres(b, nullptr, true); });
   radii_time_ = time;
   for (size_t b = 0; b < bodies.size(); ++b)
-    pad[b] = motion_bound(static_cast<int>(b), time, span, woken[b] != 0) + margin;
+    pad[b] = motion_bound(static_cast<int>(b), time, span, asleep_then[b] != 0) + margin;
   centre_at_broad_phase_ = centre_now_;
   broad_phase_time_ = time;
   sphere_pairs_.clear();

@@ -59,12 +59,15 @@ std::string lid_keyframes(double start, double bottom, double press) {
          pose(held + 0.5, pressed) + ", " + pose(held + 1.0, kLidParked) + "]";
 }
 
-/// The case's overrides: its grain count, fill and seed.
-std::vector<std::string> bunny_overrides(const HardCasesStudySettings& s) {
-  std::vector<std::string> overrides{"grains.count=" + std::to_string(s.bunny_grains),
-                                     "emitter.seconds=" + cell(s.fill_seconds)};
+/// `overrides` and, when the study sets one, the grains' seed.
+std::vector<std::string> with_seed(const HardCasesStudySettings& s, std::vector<std::string> overrides) {
   if (s.seed > 0) overrides.push_back("grains.seed=" + std::to_string(s.seed));
   return overrides;
+}
+
+/// The bunny's overrides: its grain count, fill and seed.
+std::vector<std::string> bunny_overrides(const HardCasesStudySettings& s) {
+  return with_seed(s, {"grains.count=" + std::to_string(s.bunny_grains), "emitter.seconds=" + cell(s.fill_seconds)});
 }
 
 /// The bunny: a run to the press's start for the settled height H (the top centre plus half a
@@ -84,7 +87,8 @@ CaseOutcome bunny_pressed(const HardCasesStudySettings& s, const std::filesystem
   const double held = start + s.press_seconds;  // the lid at its lowest from here, for 0.5 s
   run.overrides = bunny_overrides(s);
   run.overrides.push_back(frames_to(held + 3.0));
-  run.overrides.push_back("colliders.2.keyframes=" + lid_keyframes(start, s.pressed_fraction * height, s.press_seconds));
+  const std::string lid = lid_keyframes(start, s.pressed_fraction * height, s.press_seconds);
+  run.overrides.push_back("colliders.2.keyframes=" + lid);
   run_scene_child(run, folder / "bunny_pressed", "hard cases: the bunny's press");
   CaseOutcome c = read_outcome(folder / "bunny_pressed");
   const NumericCsv stats = read_numeric_csv(folder / "bunny_pressed" / "stats.csv");
@@ -101,11 +105,10 @@ CaseOutcome bunny_pressed(const HardCasesStudySettings& s, const std::filesystem
 }
 
 CaseOutcome cooker_drop(const HardCasesStudySettings& s, const std::filesystem::path& folder) {
-  SceneChildRun run{s.scenes / "cases" / "cooker_drop.toml",
-                    {"grains.count=" + std::to_string(s.cooker_grains),
-                     "solver.frames=" + std::to_string(s.cooker_frames)},
-                    s.threads};
-  if (s.seed > 0) run.overrides.push_back("grains.seed=" + std::to_string(s.seed));
+  const SceneChildRun run{s.scenes / "cases" / "cooker_drop.toml",
+                          with_seed(s, {"grains.count=" + std::to_string(s.cooker_grains),
+                                        "solver.frames=" + std::to_string(s.cooker_frames)}),
+                          s.threads};
   run_scene_child(run, folder / "cooker_drop", "hard cases: the cooker's drop");
   return read_outcome(folder / "cooker_drop");
 }
