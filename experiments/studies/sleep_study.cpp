@@ -47,12 +47,13 @@ SleepRun run_pile(const SleepStudySettings& s, std::vector<std::string> override
 }
 
 void plot_sleep(const std::filesystem::path& folder) {
-  render_plot(folder, "sleep", csv_plot_header("sleep", 800, 500) + R"(
+  render_plot(folder, "sleep", csv_plot_header("sleep", 800, 560) + R"(
 set xlabel 'wall time of the run [s]'
 set ylabel 'settled pile off the run without sleeping [µm]'
-set key top right
+set key below
+set offsets graph 0.05, graph 0.1, graph 0.05, 0
 plot 'sleep.csv' using (strcol(1) eq 'frames' ? $5 : 1/0):($11 * 1e6):3 with labels offset 1,1 notitle, \
-     '' using (strcol(1) eq 'speed' ? $5 : 1/0):($11 * 1e6):2 with labels offset 1,-1 notitle, \
+     '' using (strcol(1) eq 'speed' ? $5 : 1/0):($11 * 1e6):(sprintf('%g m/s', $2)) with labels offset 1,2 notitle, \
      '' using (strcol(1) eq 'frames' ? $5 : 1/0):($11 * 1e6) with linespoints pt 7 title 'heights, by frames at rest', \
      '' using (strcol(1) eq 'speed' ? $5 : 1/0):($11 * 1e6) with linespoints pt 5 title 'heights, by speed', \
      '' using (strcol(1) eq 'frames' ? $5 : 1/0):($12 * 1e6) with linespoints dt 2 pt 6 \
