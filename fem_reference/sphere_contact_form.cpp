@@ -49,7 +49,7 @@ std::vector<EmbeddedSphere> embedded_spheres(const xpbd::Model& model, std::vect
     const xpbd::Body& body = model.bodies[b];
     if (body.kind != xpbd::BodyKind::kSoft) continue;
     for (int s = 0; s < body.sphere_count(); ++s) {
-      spheres.push_back({body.anchors[s], body.weights[s], xpbd::sphere_radius(model, body, s)});
+      spheres.push_back({body.anchors[s].particles, body.anchors[s].weights, xpbd::sphere_radius(model, body, s)});
       if (body_of) body_of->push_back(static_cast<int>(b));
     }
   }

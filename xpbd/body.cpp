@@ -87,9 +87,9 @@ int add_soft_body(Model& model, const TetMesh& mesh, double density, const LameP
       const Eigen::Vector4d w = barycentric(tet_positions(mesh.V, mesh.T, t), centre, &outside);
       if (outside < best) best = outside, holder = t, weights = w;
     }
-    body.anchors.push_back({mesh.T(holder, 0) + offset, mesh.T(holder, 1) + offset, mesh.T(holder, 2) + offset,
-                            mesh.T(holder, 3) + offset});
-    body.weights.push_back(weights);
+    body.anchors.push_back({{mesh.T(holder, 0) + offset, mesh.T(holder, 1) + offset, mesh.T(holder, 2) + offset,
+                             mesh.T(holder, 3) + offset},
+                            weights});
     body.anchor_tets.push_back(static_cast<int>(model.neo_hookean.size() - single.neo_hookean.size()) + holder);
     body.radii.push_back(spheres.radii[s]);
   }
@@ -119,9 +119,7 @@ double reach(const Body& body) {
 
 Vec3 sphere_centre(const Model& model, const Body& body, int s) {
   if (body.kind == BodyKind::kRigid) return model.rigid_bodies[body.rigid_body].world_point(body.local_centres[s]);
-  Vec3 c = Vec3::Zero();
-  for (int k = 0; k < 4; ++k) c += body.weights[s][k] * model.particles.x.row(body.anchors[s][k]).transpose();
-  return c;
+  return body.anchors[s].at(model.particles.x);
 }
 
 double sphere_radius(const Model& model, const Body& body, int s) {
@@ -149,12 +147,7 @@ Vec3 previous_point(const Model& model, const Body& body, int s, const Vec3& poi
     return rigid.previous_world_point(rigid.to_local(point));
   }
   // The point moves with the embedding of the sphere's centre.
-  Vec3 displacement = Vec3::Zero();
-  for (int k = 0; k < 4; ++k) {
-    const int i = body.anchors[s][k];
-    displacement += body.weights[s][k] * (model.particles.x.row(i) - x_previous.row(i)).transpose();
-  }
-  return point - displacement;
+  return point - body.anchors[s].displacement(model.particles.x, x_previous);
 }
 
 double inverse_mass_at(const Model& model, const Body& body, int s, const Vec3& point, const Vec3& n) {
@@ -163,10 +156,7 @@ double inverse_mass_at(const Model& model, const Body& body, int s, const Vec3& 
     const RigidBody& rigid = model.rigid_bodies[body.rigid_body];
     return generalized_inverse_mass(rigid, point - rigid.x, n);
   }
-  // Δx_k = w_k b_k p moves the embedded point by Σ b_k² w_k p.
-  double w = 0.0;
-  for (int k = 0; k < 4; ++k) w += body.weights[s][k] * body.weights[s][k] * model.particles.w[body.anchors[s][k]];
-  return w;
+  return body.anchors[s].inverse_mass(model.particles.w);
 }
 
 void apply_impulse_at(Model& model, const Body& body, int s, const Vec3& point, const Vec3& p) {
@@ -176,10 +166,7 @@ void apply_impulse_at(Model& model, const Body& body, int s, const Vec3& point, 
     apply_positional_impulse(rigid, point - rigid.x, p);
     return;
   }
-  for (int k = 0; k < 4; ++k) {
-    const int i = body.anchors[s][k];
-    model.particles.x.row(i) += (model.particles.w[i] * body.weights[s][k]) * p.transpose();
-  }
+  body.anchors[s].apply(model.particles.x, model.particles.w, p);
 }
 
 Vec3 material_coordinates(const Model& model, const Body& body, int s, const Vec3& point, const Positions* x_previous) {
@@ -187,10 +174,7 @@ Vec3 material_coordinates(const Model& model, const Body& body, int s, const Vec
     const RigidBody& rigid = model.rigid_bodies[body.rigid_body];
     return x_previous ? rigid.to_previous_local(point) : rigid.to_local(point);
   }
-  Vec3 centre = Vec3::Zero();
-  const Positions& x = x_previous ? *x_previous : model.particles.x;
-  for (int k = 0; k < 4; ++k) centre += body.weights[s][k] * x.row(body.anchors[s][k]).transpose();
-  return point - centre;
+  return point - body.anchors[s].at(x_previous ? *x_previous : model.particles.x);
 }
 
 Vec3 material_point(const Model& model, const Body& body, int s, const Vec3& coordinates) {
@@ -203,9 +187,7 @@ Vec3 velocity_at(const Model& model, const Body& body, int s, const Vec3& point)
     const RigidBody& rigid = model.rigid_bodies[body.rigid_body];
     return rigid.v + rigid.omega.cross(point - rigid.x);
   }
-  Vec3 v = Vec3::Zero();
-  for (int k = 0; k < 4; ++k) v += body.weights[s][k] * model.particles.v.row(body.anchors[s][k]).transpose();
-  return v;
+  return body.anchors[s].at(model.particles.v);
 }
 
 void apply_velocity_impulse_at(Model& model, const Body& body, int s, const Vec3& point, const Vec3& p) {
@@ -217,10 +199,7 @@ void apply_velocity_impulse_at(Model& model, const Body& body, int s, const Vec3
     rigid.omega += rigid.apply_inverse_inertia((point - rigid.x).cross(p));
     return;
   }
-  for (int k = 0; k < 4; ++k) {
-    const int i = body.anchors[s][k];
-    model.particles.v.row(i) += (model.particles.w[i] * body.weights[s][k]) * p.transpose();
-  }
+  body.anchors[s].apply(model.particles.v, model.particles.w, p);
 }
 
 }  // namespace rice::xpbd

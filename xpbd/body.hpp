@@ -25,6 +25,36 @@ struct LameParameters;
 
 enum class BodyKind { kSoft, kRigid };
 
+/// Where a soft body holds a sphere's centre: Σ weights[k] x[particles[k]] over the corners of
+/// the tet holding it. The operations below, for a soft body, on these four particles (the
+/// contact sweeps call them through each contact's sides, contact_solver.hpp).
+struct SphereAnchor {
+  std::array<int, 4> particles{};
+  Eigen::Vector4d weights = Eigen::Vector4d::Zero();
+  /// Σ weights[k] x[particles[k]] (the centre, from positions; its velocity, from velocities).
+  Vec3 at(const Positions& x) const {
+    Vec3 c = Vec3::Zero();
+    for (int k = 0; k < 4; ++k) c += weights[k] * x.row(particles[k]).transpose();
+    return c;
+  }
+  /// How far the centre moved from x_previous to x.
+  Vec3 displacement(const Positions& x, const Positions& x_previous) const {
+    Vec3 d = Vec3::Zero();
+    for (int k = 0; k < 4; ++k) d += weights[k] * (x.row(particles[k]) - x_previous.row(particles[k])).transpose();
+    return d;
+  }
+  /// Σ b_k² w_k: Δx_k = w_k b_k p moves the centre by that times p (w the inverse masses).
+  double inverse_mass(const Eigen::VectorXd& w) const {
+    double sum = 0.0;
+    for (int k = 0; k < 4; ++k) sum += weights[k] * weights[k] * w[particles[k]];
+    return sum;
+  }
+  /// x_k += w_k b_k p: the impulse p applied at the centre (to positions or velocities).
+  void apply(Positions& x, const Eigen::VectorXd& w, const Vec3& p) const {
+    for (int k = 0; k < 4; ++k) x.row(particles[k]) += (w[particles[k]] * weights[k]) * p.transpose();
+  }
+};
+
 /// The elastic material of a tet's constraint pair.
 enum class TetMaterial {
   kStableNeoHookean,  ///< the paper's (neo_hookean_constraints.hpp)
@@ -45,10 +75,8 @@ struct Body {
   bool moving = false;  ///< faster than the sleep speed over the last step (it wakes neighbours)
   /// Rigid: sphere centres in the body frame.
   std::vector<Vec3> local_centres;
-  /// Soft: each centre as Σ weights[k] x[anchors[k]] over the corners of the tet holding it,
-  /// that tet's index in Model::neo_hookean.
-  std::vector<std::array<int, 4>> anchors;
-  std::vector<Eigen::Vector4d> weights;
+  /// Soft: each centre's anchor, and the index in Model::neo_hookean of the tet holding it.
+  std::vector<SphereAnchor> anchors;
   std::vector<int> anchor_tets;
   int sphere_count() const { return static_cast<int>(radii.size()); }
 };

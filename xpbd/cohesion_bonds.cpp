@@ -51,8 +51,8 @@ void CohesionBonds::hold_in_particle_steps(const Model& model, ParticleContacts&
     ParticleBond term;
     const auto add_sphere = [&](const Body& body, int s, double sign) {
       for (int k = 0; k < 4; ++k) {
-        term.point.particles[term.point.size] = body.anchors[s][k];
-        term.point.weights[term.point.size++] = sign * body.weights[s][k];
+        term.point.particles[term.point.size] = body.anchors[s].particles[k];
+        term.point.weights[term.point.size++] = sign * body.anchors[s].weights[k];
       }
     };
     add_sphere(a, bond.key[2], 1.0);

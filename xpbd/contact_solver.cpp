@@ -14,6 +14,57 @@
 
 namespace rice::xpbd {
 
+// ---- One side of a contact: body.hpp's operations, a soft side's on its anchor ----
+
+ContactSolver::Side ContactSolver::side(int body, int s) const {
+  const Body& b = model_.bodies[body];
+  return {&b, b.kind == BodyKind::kSoft ? &b.anchors[s] : nullptr, radius(body, s), s, b.asleep};
+}
+
+Vec3 ContactSolver::Side::centre(const Model& model) const {
+  return anchor ? anchor->at(model.particles.x) : sphere_centre(model, *body, s);
+}
+
+Vec3 ContactSolver::Side::previous_point(const Model& model, const Vec3& point, const Positions& x_previous) const {
+  return anchor ? Vec3(point - anchor->displacement(model.particles.x, x_previous))
+                : xpbd::previous_point(model, *body, s, point, x_previous);
+}
+
+double ContactSolver::Side::inverse_mass(const Model& model, const Vec3& point, const Vec3& n) const {
+  if (asleep) return 0.0;
+  return anchor ? anchor->inverse_mass(model.particles.w) : inverse_mass_at(model, *body, s, point, n);
+}
+
+void ContactSolver::Side::apply_impulse(Model& model, const Vec3& point, const Vec3& p) const {
+  if (asleep) return;
+  if (anchor) anchor->apply(model.particles.x, model.particles.w, p);
+  else apply_impulse_at(model, *body, s, point, p);
+}
+
+Vec3 ContactSolver::Side::velocity(const Model& model, const Vec3& point) const {
+  return anchor ? anchor->at(model.particles.v) : velocity_at(model, *body, s, point);
+}
+
+void ContactSolver::Side::apply_velocity_impulse(Model& model, const Vec3& point, const Vec3& p) const {
+  if (asleep) return;
+  if (anchor) anchor->apply(model.particles.v, model.particles.w, p);
+  else apply_velocity_impulse_at(model, *body, s, point, p);
+}
+
+Vec3 ContactSolver::Side::material_point(const Model& model, const Vec3& c, const Vec3& coordinates) const {
+  return anchor ? Vec3(c + coordinates) : xpbd::material_point(model, *body, s, coordinates);
+}
+
+Vec3 ContactSolver::Side::coordinates_now(const Model& model, const Vec3& c, const Vec3& point) const {
+  return anchor ? Vec3(point - c) : material_coordinates(model, *body, s, point);
+}
+
+Vec3 ContactSolver::Side::coordinates_then(const Model& model, const Vec3& point, const Positions& x_previous) const {
+  return anchor ? Vec3(point - anchor->at(x_previous)) : material_coordinates(model, *body, s, point, &x_previous);
+}
+
+// ---- The contact solver ----
+
 ContactSolver::ContactSolver(Model& model, bool parallel) : model_(model), parallel_(parallel) {
   const ContactSettings& s = model.contact;
   if (!(s.static_friction >= 0.0 && s.dynamic_friction >= 0.0 && s.dynamic_friction <= s.static_friction))
@@ -386,8 +437,8 @@ ParticleContact ContactSolver::make_particle_contact(const Contact& contact, con
   c.stiffness = model_.contact.particle_stiffness;
   const auto add_sphere = [&](const Body& body, int s, double sign) {
     for (int k = 0; k < 4; ++k) {
-      c.point.particles[c.point.size] = body.anchors[s][k];
-      c.point.weights[c.point.size++] = sign * body.weights[s][k];
+      c.point.particles[c.point.size] = body.anchors[s].particles[k];
+      c.point.weights[c.point.size++] = sign * body.anchors[s].weights[k];
     }
   };
   add_sphere(model_.bodies[a], sa, 1.0);
@@ -443,6 +494,7 @@ void ContactSolver::add_contacts(const BodyPair& pair, StateOf& state_of, std::v
       if (sd.distance - radius(pair.a, sa) >= moved + margin) continue;
       contacts_.push_back({state_of({pair.a, pair.b, sa, 0}), sd.normal,
                            local - (sd.distance / pose_start_[k].scale) * sd.normal});
+      contacts_.back().sides[0] = side(pair.a, sa);
     }
     return;
   }
@@ -455,6 +507,7 @@ void ContactSolver::add_contacts(const BodyPair& pair, StateOf& state_of, std::v
     const Vec3 normal = distance > 0.0 ? Vec3(d / distance) : Vec3::UnitZ();
     const std::array<int, 4> key{pair.a, pair.b, sa, sb};
     contacts_.push_back({state_of(key), normal, Vec3::Zero()});
+    contacts_.back().sides = {side(pair.a, sa), side(pair.b, sb)};
     if (bonds_ && gap <= model_.contact.bond_distance)
       touches.push_back(
           {key, start(pair.a, sa) - radius(pair.a, sa) * normal, start(pair.b, sb) + radius(pair.b, sb) * normal});
@@ -486,41 +539,38 @@ void ContactSolver::project(const Positions& x_previous) {
 }
 
 ContactSolver::ContactPoints ContactSolver::locate(const Contact& contact) const {
-  const auto [a, b, sa, sb] = states_[contact.state].key;
+  const int b = states_[contact.state].key[1];
   ContactPoints p;
-  p.a = &model_.bodies[a];
-  const Vec3 ca = sphere_centre(model_, *p.a, sa);
+  p.a = &contact.sides[0];
+  p.ca = p.a->centre(model_);
   if (is_collider(b)) {
     const ColliderKeyframe& end = pose_end_[collider_index(b)];
     p.n = end.rotation * contact.normal;
     p.pb = to_world(end, contact.collider_point);
     p.pb_start = to_world(pose_start_[collider_index(b)], contact.collider_point);
   } else {
-    p.b = &model_.bodies[b];
+    p.b = &contact.sides[1];
     p.n = contact.normal;
-    p.pb = sphere_centre(model_, *p.b, sb) + radius(b, sb) * p.n;
+    p.cb = p.b->centre(model_);
+    p.pb = p.cb + p.b->radius * p.n;
   }
-  p.pa = ca - radius(a, sa) * p.n;
+  p.pa = p.ca - p.a->radius * p.n;
   return p;
 }
 
-double ContactSolver::inverse_mass(const Contact& contact, const ContactPoints& p, const Vec3& direction) const {
-  const auto [a, b, sa, sb] = states_[contact.state].key;
-  return inverse_mass_at(model_, *p.a, sa, p.pa, direction) +
-         (p.b ? inverse_mass_at(model_, *p.b, sb, p.pb, direction) : 0.0);
+double ContactSolver::inverse_mass(const ContactPoints& p, const Vec3& direction) const {
+  return p.a->inverse_mass(model_, p.pa, direction) + (p.b ? p.b->inverse_mass(model_, p.pb, direction) : 0.0);
 }
 
-void ContactSolver::push(const Contact& contact, const ContactPoints& p, const Vec3& impulse) {
-  const auto [a, b, sa, sb] = states_[contact.state].key;
-  apply_impulse_at(model_, *p.a, sa, p.pa, impulse);
-  if (p.b) apply_impulse_at(model_, *p.b, sb, p.pb, -impulse);
+void ContactSolver::push(const ContactPoints& p, const Vec3& impulse) {
+  p.a->apply_impulse(model_, p.pa, impulse);
+  if (p.b) p.b->apply_impulse(model_, p.pb, -impulse);
 }
 
-Vec3 ContactSolver::tangential_slip(const Contact& contact, const ContactPoints& p, const Positions& x_previous) const {
+Vec3 ContactSolver::tangential_slip(const ContactPoints& p, const Positions& x_previous) const {
   // Relative displacement of the two contact points over the substep, tangential part.
-  const auto [a, b, sa, sb] = states_[contact.state].key;
-  const Vec3 da = p.pa - previous_point(model_, *p.a, sa, p.pa, x_previous);
-  const Vec3 db = p.b ? Vec3(p.pb - previous_point(model_, *p.b, sb, p.pb, x_previous)) : Vec3(p.pb - p.pb_start);
+  const Vec3 da = p.pa - p.a->previous_point(model_, p.pa, x_previous);
+  const Vec3 db = p.b ? Vec3(p.pb - p.b->previous_point(model_, p.pb, x_previous)) : Vec3(p.pb - p.pb_start);
   const Vec3 d = da - db;
   return d - p.n.dot(d) * p.n;
 }
@@ -528,17 +578,17 @@ Vec3 ContactSolver::tangential_slip(const Contact& contact, const ContactPoints&
 Vec3 ContactSolver::anchored_slip(ContactState& state, const ContactPoints& p, const Positions& x_previous) const {
   // Anchors, set once: a's material point now at p_a, and b's material point where p_a was at
   // the substep's start. Their tangential separation is the slip since sticking began.
-  const auto [a, b, sa, sb] = state.key;
+  const int b = state.key[1];
   if (!state.anchored) {
-    const Vec3 start = previous_point(model_, *p.a, sa, p.pa, x_previous);
-    state.anchor_a = material_coordinates(model_, *p.a, sa, p.pa);
-    state.anchor_b = p.b ? material_coordinates(model_, *p.b, sb, start, &x_previous)
-                             : to_local(pose_start_[collider_index(b)], start);
+    const Vec3 start = p.a->previous_point(model_, p.pa, x_previous);
+    state.anchor_a = p.a->coordinates_now(model_, p.ca, p.pa);
+    state.anchor_b = p.b ? p.b->coordinates_then(model_, start, x_previous)
+                         : to_local(pose_start_[collider_index(b)], start);
     state.anchored = true;
   }
-  const Vec3 on_b = p.b ? material_point(model_, *p.b, sb, state.anchor_b)
+  const Vec3 on_b = p.b ? p.b->material_point(model_, p.cb, state.anchor_b)
                         : to_world(pose_end_[collider_index(b)], state.anchor_b);
-  const Vec3 d = material_point(model_, *p.a, sa, state.anchor_a) - on_b;
+  const Vec3 d = p.a->material_point(model_, p.ca, state.anchor_a) - on_b;
   return d - p.n.dot(d) * p.n;
 }
 
@@ -548,10 +598,10 @@ void ContactSolver::project_normal(Contact& contact) {
   const ContactPoints p = locate(contact);
   const double C = p.n.dot(p.pa - p.pb);
   if (C >= 0.0) return;
-  const double w = inverse_mass(contact, p, p.n);
+  const double w = inverse_mass(p, p.n);
   if (!(w > 0.0)) return;
   const double delta = -C / w;
-  push(contact, p, delta * p.n);
+  push(p, delta * p.n);
   contact.lambda_normal += delta;
 }
 
@@ -573,11 +623,11 @@ void ContactSolver::project_friction(Contact& contact, const Positions& x_previo
   if (contact.lambda_normal == 0.0) return;
   const ContactPoints p = locate(contact);
   const Vec3 tangential =
-      state.sliding ? tangential_slip(contact, p, x_previous) : anchored_slip(state, p, x_previous);
+      state.sliding ? tangential_slip(p, x_previous) : anchored_slip(state, p, x_previous);
   const double slip = tangential.norm();
   if (!(slip > 0.0)) return;
   const Vec3 t = tangential / slip;
-  const double w = inverse_mass(contact, p, t);
+  const double w = inverse_mass(p, t);
   if (!(w > 0.0)) return;
   const double needed = slip / w;
   double delta = needed;
@@ -589,34 +639,33 @@ void ContactSolver::project_friction(Contact& contact, const Positions& x_previo
     contact.capped = needed > delta;
   }
   if (!(delta > 0.0)) return;
-  push(contact, p, -delta * t);
+  push(p, -delta * t);
   contact.lambda_tangent += delta;
   contact.friction -= delta * t;
 }
 
 void ContactSolver::restart_anchors(ContactState& state, const ContactPoints& p) const {
   // The slip friction could not take back has slid: b's anchor moves to where a's is now.
-  const auto [a, b, sa, sb] = state.key;
-  const Vec3 on_a = material_point(model_, *p.a, sa, state.anchor_a);
+  const Vec3 on_a = p.a->material_point(model_, p.ca, state.anchor_a);
   state.anchor_b =
-      p.b ? material_coordinates(model_, *p.b, sb, on_a) : to_local(pose_end_[collider_index(b)], on_a);
+      p.b ? p.b->coordinates_now(model_, p.cb, on_a) : to_local(pose_end_[collider_index(state.key[1])], on_a);
 }
 
 void ContactSolver::solve_velocities() {
   // MMCJK20 §3.6 with restitution 0: every contact that pushed in this substep leaves its two
   // points with no relative normal velocity. The position solve's corrections, applied at
   // points below the centre of mass, otherwise leave a resting grain rocking.
-  for (const Contact& contact : contacts_) {
+  for (size_t c = 0; c < contacts_.size(); ++c) {
+    const Contact& contact = contacts_[c];
     if (contact.lambda_normal == 0.0) continue;
-    const auto [a, b, sa, sb] = states_[contact.state].key;
-    const ContactPoints p = locate(contact);
-    const Vec3 vb = p.b ? velocity_at(model_, *p.b, sb, p.pb) : Vec3((p.pb - p.pb_start) / h_);
-    const double vn = p.n.dot(velocity_at(model_, *p.a, sa, p.pa) - vb);
-    const double w = inverse_mass(contact, p, p.n);
+    const ContactPoints& p = located_[c];
+    const Vec3 vb = p.b ? p.b->velocity(model_, p.pb) : Vec3((p.pb - p.pb_start) / h_);
+    const double vn = p.n.dot(p.a->velocity(model_, p.pa) - vb);
+    const double w = inverse_mass(p, p.n);
     if (vn == 0.0 || !(w > 0.0)) continue;
     const Vec3 impulse = (-vn / w) * p.n;
-    apply_velocity_impulse_at(model_, *p.a, sa, p.pa, impulse);
-    if (p.b) apply_velocity_impulse_at(model_, *p.b, sb, p.pb, -impulse);
+    p.a->apply_velocity_impulse(model_, p.pa, impulse);
+    if (p.b) p.b->apply_velocity_impulse(model_, p.pb, -impulse);
   }
 }
 
@@ -640,7 +689,7 @@ size_t ContactSolver::end_pair_substep(size_t first, bool end_of_interval, doubl
     const Contact& contact = contacts_[last];
     ContactState& state = states_[contact.state];
     if (state.key[0] != key[0] || state.key[1] != key[1]) break;
-    const ContactPoints p = locate(contact);
+    const ContactPoints& p = located_[last] = locate(contact);
     deepest = std::max(deepest, -p.n.dot(p.pa - p.pb));
     if (is_collider(key[1]))
       collider_impulses_[collider_index(key[1])] -= (contact.lambda_normal * p.n + contact.friction) / h_;
@@ -672,7 +721,7 @@ size_t ContactSolver::end_pair_substep(size_t first, bool end_of_interval, doubl
     // Anchors go when the pair slides; they stay through a flight (flown), and start again
     // where the contact is when friction could not take the slip back (restart_anchors).
     state.anchored = state.anchored && !slides;
-    if (state.anchored && contacts_[c].capped) restart_anchors(state, locate(contacts_[c]));
+    if (state.anchored && contacts_[c].capped) restart_anchors(state, located_[c]);
     state.flown = state.anchored && contacts_[c].lambda_normal == 0.0;
     if (contacts_[c].particle_contact < 0) continue;
     const ParticleContact& held = particle_contacts_.contacts()[contacts_[c].particle_contact];
@@ -693,6 +742,7 @@ void ContactSolver::end_substep(bool end_of_interval) {
   }
   double deepest = 0.0;
   collider_impulses_.resize(model_.colliders.size(), Vec3::Zero());
+  located_.resize(contacts_.size());
   interval_time_ += h_;
   for (size_t first = 0; first < contacts_.size();) first = end_pair_substep(first, end_of_interval, deepest);
   statistics_.max_penetration = deepest;

@@ -70,7 +70,7 @@ class ContactSolver {
   /// One Gauss–Seidel sweep over the contacts: all normals, then all frictions.
   void project(const Positions& x_previous);
   /// After the velocity update: removes the relative normal velocity of every contact that
-  /// pushed in this substep (restitution 0).
+  /// pushed in this substep (restitution 0). Call after end_substep, with the positions it saw.
   void solve_velocities();
   /// Records which body pairs slide, for the next substep's friction coefficient, and the
   /// statistics; call after the last sweep of a substep, saying whether it ends the
@@ -131,6 +131,30 @@ class ContactSolver {
   static int collider_key(int collider) { return -1 - collider; }
   static bool is_collider(int b) { return b < 0; }
   static int collider_index(int b) { return -1 - b; }
+  /// One body's side of a contact, as the sweeps need it: the body and its sphere s, the
+  /// sphere's radius, whether the body sleeps and, soft, the sphere's anchor, taken when the
+  /// contact is made (none changes within a substep), so that the sweeps read them in contact
+  /// order (looked up from the state's key through the body each time, the anchor's loads were
+  /// 62% of sphere_centre's samples in a settling pile of 3400). The body operations of
+  /// body.hpp for this side, a soft side's on its anchor:
+  struct Side {
+    const Body* body = nullptr;
+    const SphereAnchor* anchor = nullptr;  ///< soft only
+    double radius = 0.0;
+    int s = 0;
+    bool asleep = false;
+    Vec3 centre(const Model& model) const;
+    Vec3 previous_point(const Model& model, const Vec3& point, const Positions& x_previous) const;
+    double inverse_mass(const Model& model, const Vec3& point, const Vec3& n) const;
+    void apply_impulse(Model& model, const Vec3& point, const Vec3& p) const;
+    Vec3 velocity(const Model& model, const Vec3& point) const;
+    void apply_velocity_impulse(Model& model, const Vec3& point, const Vec3& p) const;
+    /// material_point and material_coordinates, now with the sphere's centre c at hand (a
+    /// soft body's are c plus or minus, without summing the anchor again), or at x_previous.
+    Vec3 material_point(const Model& model, const Vec3& c, const Vec3& coordinates) const;
+    Vec3 coordinates_now(const Model& model, const Vec3& c, const Vec3& point) const;
+    Vec3 coordinates_then(const Model& model, const Vec3& point, const Positions& x_previous) const;
+  };
   struct Contact {
     int state;  ///< index into states_
     Vec3 normal;          ///< world (sphere pair) or collider frame
@@ -139,14 +163,19 @@ class ContactSolver {
     Vec3 friction = Vec3::Zero();  ///< sum of the friction impulses this substep
     bool capped = false;  ///< sliding friction reached μ_k λ_n in the last sweep
     int particle_contact = -1;  ///< index in particle_contacts_ when held in particle steps
+    std::array<Side, 2> sides{};  ///< a's, and b's when b is a body
   };
   /// A contact's normal (world) and points at the current positions: p_a on a's sphere,
   /// p_b on b's sphere or on the collider, where that collider point was at the start.
+  /// c_a, c_b: the two spheres' centres (c_b: b a body), kept so that a soft body's material
+  /// points (its centre plus the coordinates) need not sum the embedding again.
   struct ContactPoints {
-    const Body* a = nullptr;
-    const Body* b = nullptr;  ///< null for a collider
-    Vec3 n, pa, pb, pb_start = Vec3::Zero();
+    const Side* a = nullptr;
+    const Side* b = nullptr;  ///< null for a collider
+    Vec3 n, ca, cb, pa, pb, pb_start = Vec3::Zero();
   };
+  /// Side `body`'s sphere s, for a contact made now.
+  Side side(int body, int s) const;
 
   /// The broad phase's steps (find_candidates): candidate sphere pairs of bodies and the
   /// colliders in motion (`moving_ones`; which grows the box padding `pad` of each body one
@@ -163,9 +192,9 @@ class ContactSolver {
   void spheres_near(int body, const std::vector<Vec3>& centres, const Box& box, double reach,
                     std::vector<int>& near) const;
   ContactPoints locate(const Contact& contact) const;
-  double inverse_mass(const Contact& contact, const ContactPoints& p, const Vec3& direction) const;
-  void push(const Contact& contact, const ContactPoints& p, const Vec3& impulse);
-  Vec3 tangential_slip(const Contact& contact, const ContactPoints& p, const Positions& x_previous) const;
+  double inverse_mass(const ContactPoints& p, const Vec3& direction) const;
+  void push(const ContactPoints& p, const Vec3& impulse);
+  Vec3 tangential_slip(const ContactPoints& p, const Positions& x_previous) const;
   Vec3 anchored_slip(ContactState& state, const ContactPoints& p, const Positions& x_previous) const;
   void restart_anchors(ContactState& state, const ContactPoints& p) const;
   /// end_substep for the contacts of one body pair, from `first`: their statistics (the
@@ -228,6 +257,9 @@ class ContactSolver {
   std::vector<char> centres_at_rest_;    ///< per body: asleep, with its centres computed
   std::vector<int> active_bodies_;       ///< bodies with candidates, increasing
   std::vector<Contact> contacts_;
+  /// Each contact located at the substep's end positions (end_substep), which solve_velocities
+  /// does not move: located once for both.
+  std::vector<ContactPoints> located_;
   std::vector<ColliderKeyframe> pose_start_, pose_end_;  ///< collider poses at the substep's ends
   std::vector<char> present_;  ///< whether each collider is there in the substep
   ContactStatistics statistics_;

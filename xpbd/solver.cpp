@@ -346,8 +346,17 @@ std::vector<Solver::TetBlock> Solver::body_tet_blocks(const Model& model) {
 }
 
 void Solver::project_neo_hookean_tets(double h) {
+  if (h != h_scaled_ || scaled_neo_hookean_.size() != model_.neo_hookean.size()) {
+    scaled_neo_hookean_.resize(model_.neo_hookean.size());
+    for (size_t c = 0; c < model_.neo_hookean.size(); ++c) {
+      const NeoHookeanTet& t = model_.neo_hookean[c];
+      scaled_neo_hookean_[c] = {scale_compliance(t.compliance_deviatoric(), t.beta_deviatoric, h),
+                                scale_compliance(t.compliance_hydrostatic(), t.beta_hydrostatic, h)};
+    }
+    h_scaled_ = h;
+  }
   if (tet_blocks_.empty() || settings_.execution == Execution::kSerial) {
-    for_each_constraint(coloring_neo_hookean_, [&](int c) { project_neo_hookean(c, h); });
+    for_each_constraint(coloring_neo_hookean_, [&](int c) { project_neo_hookean(c); });
     return;
   }
   // A grain's few dozen tets take microseconds: one parallel loop over the awake bodies per
@@ -357,7 +366,7 @@ void Solver::project_neo_hookean_tets(double h) {
   tbb::parallel_for(blocks, [&](const tbb::blocked_range<size_t>& range) {
     for (size_t k = range.begin(); k != range.end(); ++k) {
       const TetBlock& block = tet_blocks_[awake_blocks_[k]];
-      for (int c = block.first; c < block.last; ++c) project_neo_hookean(c, h);
+      for (int c = block.first; c < block.last; ++c) project_neo_hookean(c);
     }
   });
 }
@@ -416,7 +425,7 @@ void Solver::project_volume(int c, double h) {
   for (int k = 0; k < 4; ++k) position(x, id[k]) += w[id[k]] * delta_lambda * g.segment<3>(3 * k);
 }
 
-void Solver::project_neo_hookean(int c, double h) {
+void Solver::project_neo_hookean(int c) {
   // The deviatoric and hydrostatic constraints of one tet solved jointly (Macklin & Müller
   // 2021 §5): solved one after the other, the Neo-Hookean pair would fight at rest, where
   // neither is zero.
@@ -466,9 +475,8 @@ void Solver::project_neo_hookean(int c, double h) {
     grad_dot_dx[1] += grad_H.col(k).dot(dx);
   }
   gwg(1, 0) = gwg(0, 1);
-  const Vec2 delta_lambda = damped_delta_lambda_pair(
-      C, lambda_neo_hookean_[c], scale_compliance(t.compliance_deviatoric(), t.beta_deviatoric, h),
-      scale_compliance(t.compliance_hydrostatic(), t.beta_hydrostatic, h), grad_dot_dx, gwg);
+  const auto& [scaled_D, scaled_H] = scaled_neo_hookean_[c];
+  const Vec2 delta_lambda = damped_delta_lambda_pair(C, lambda_neo_hookean_[c], scaled_D, scaled_H, grad_dot_dx, gwg);
   if (!delta_lambda.allFinite()) fail("neo-hookean tet", c);
   lambda_neo_hookean_[c] += delta_lambda;
   for (int k = 0; k < 4; ++k)

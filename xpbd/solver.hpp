@@ -16,11 +16,13 @@
 // construction: build a new solver after adding or removing constraints.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "xpbd/damped_update.hpp"
 #include "xpbd/graph_coloring.hpp"
 #include "xpbd/model.hpp"
 
@@ -159,7 +161,7 @@ class Solver {
   void iterate(double h);
   void project_distance(int c, double h);
   void project_volume(int c, double h);
-  void project_neo_hookean(int c, double h);
+  void project_neo_hookean(int c);
   void project_attachments(double h);
   void project_ground();
   /// Σ_c ∇C_c(x)ᵀλ_c per particle (#P by 3), the constraint forces times h².
@@ -184,6 +186,11 @@ class Solver {
   Positions x_predicted_;  ///< x̃ of the substep, kept only for diagnostics
   std::vector<double> lambda_distance_, lambda_volume_;
   std::vector<Vec2> lambda_neo_hookean_;  ///< (λ_D, λ_H) per tet
+  /// (α̃, γ) of each tet's two constraints at the substep h_scaled_, computed when h or the
+  /// tet count changes (a tet's material is fixed for the solver's life): six of a projection's
+  /// ten divisions, the same numbers as it computed itself.
+  std::vector<std::array<ScaledCompliance, 2>> scaled_neo_hookean_;
+  double h_scaled_ = 0.0;
   /// ∇C_Dᵀλ_D + ∇C_Hᵀλ_H per tet as last applied (one column per vertex); primal correction only
   std::vector<Eigen::Matrix<double, 3, 4>> impulse_neo_hookean_;
   /// Polar rotation of each corotated tet's F, warm-started across substeps (refine_polar_rotation)

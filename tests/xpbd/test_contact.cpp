@@ -705,6 +705,28 @@ TEST_P(GrainContact, ABondFormsAtItsGapWithoutSnappingItShut) {
   EXPECT_NEAR((body_centre(model, 1) - body_centre(model, 0)).norm(), apart, 0.1 * gap);
 }
 
+TEST(SphereAnchor, AnImpulseMovesTheCentreByItsInverseMassAndTheDisplacementIsTheCentresMotion) {
+  // Δx_k = w_k b_k p moves Σ b_k x_k by (Σ b_k² w_k) p: what contact takes as the inverse mass
+  // a soft sphere shows at its centre. And the displacement is the difference of the centres.
+  Model model;
+  const Body& body = model.bodies[add_grain(model, BodyKind::kSoft, Vec3::Zero())];
+  std::mt19937 random(7);
+  std::normal_distribution<double> jitter(0.0, 1e-4);
+  for (int i = 0; i < model.particles.size(); ++i)
+    model.particles.x.row(i) += Vec3(jitter(random), jitter(random), jitter(random)).transpose();
+  const Vec3 p(2e-6, -1e-6, 3e-6);
+  for (const SphereAnchor& anchor : body.anchors) {
+    const Positions before = model.particles.x;
+    const Vec3 centre = anchor.at(before);
+    const double w = anchor.inverse_mass(model.particles.w);
+    ASSERT_GT(w, 0.0);
+    anchor.apply(model.particles.x, model.particles.w, p);
+    EXPECT_LT((anchor.at(model.particles.x) - centre - w * p).norm(), 1e-12 * (w * p).norm());
+    EXPECT_LT((anchor.displacement(model.particles.x, before) - (anchor.at(model.particles.x) - centre)).norm(),
+              1e-12 * (w * p).norm());
+  }
+}
+
 TEST(SphereRadius, ASoftGrainsSpheresThinWithItsSmallestStretchOnly) {
   // x ↦ R diag(1, 1, k) x: every tet's F has singular values (1, 1, k), so each sphere's
   // radius is min(1, k) of its rest radius, whatever the rotation R (to 1e-8 relative: the
