@@ -31,9 +31,7 @@ SignedDistance box_distance(const Vec3& p, const Vec3& b) {
   return {distance, normal};
 }
 
-}  // namespace
-
-ColliderKeyframe collider_pose(const Collider& collider, double time) {
+ColliderKeyframe keyframed_pose(const Collider& collider, double time) {
   const auto& keys = collider.motion;
   if (time <= keys.front().time) return keys.front();
   if (time >= keys.back().time) return keys.back();
@@ -48,6 +46,38 @@ ColliderKeyframe collider_pose(const Collider& collider, double time) {
   const double s = (time - a.time) / (b.time - a.time);
   const double scale = a.scale == b.scale ? a.scale : (1.0 - s) * a.scale + s * b.scale;  // (exactly 1 when unscaled)
   return {time, (1.0 - s) * a.translation + s * b.translation, a.rotation.slerp(s, b.rotation), scale};
+}
+
+/// u: the speed at which the keyframes move the collider along −a over [time, time + h].
+double keyframed_approach(const Collider& collider, double time, double h) {
+  const Vec3 step = keyframed_pose(collider, time + h).translation - keyframed_pose(collider, time).translation;
+  return std::max(0.0, -step.dot(collider.yield_axis) / h);
+}
+
+}  // namespace
+
+double yield_offset(const Collider& collider, double time) {
+  if (!yields(collider)) return 0.0;
+  return std::max(0.0, collider.yield.offset + collider.yield.rate * (time - collider.yield.time));
+}
+
+ColliderKeyframe collider_pose(const Collider& collider, double time) {
+  ColliderKeyframe pose = keyframed_pose(collider, time);
+  if (yields(collider)) pose.translation += yield_offset(collider, time) * collider.yield_axis;
+  return pose;
+}
+
+ColliderYield next_yield(const Collider& collider, double time, double h) {
+  const double s = yield_offset(collider, time);
+  const double load = collider.yield.force / collider.force_limit;
+  const double rate = keyframed_approach(collider, time, h) * std::clamp(load, 0.0, 1.0) +  // eq. in collider.hpp
+                      collider.yield_speed * std::clamp(load - 1.0, -1.0, 1.0);
+  return {time, s, std::max(rate, -s / h), collider.yield.force};  // back at its keyframes, not past them
+}
+
+double yield_reach(const Collider& collider, double time, double span) {
+  const Vec3 step = keyframed_pose(collider, time + span).translation - keyframed_pose(collider, time).translation;
+  return std::abs(step.dot(collider.yield_axis)) + collider.yield_speed * span;
 }
 
 SignedDistance local_signed_distance(const Collider& collider, const Vec3& p) {
@@ -101,6 +131,10 @@ void validate(const Collider& c, int index) {
     if (k > 0 && !(key.time > c.motion[k - 1].time))
       throw std::invalid_argument(name + ": keyframe times must increase (keyframe " + std::to_string(k) + ")");
   }
+  if (!(c.force_limit > 0.0) || !(std::abs(c.yield_axis.norm() - 1.0) < 1e-9) ||
+      !(std::isfinite(c.yield_speed) && c.yield_speed > 0.0))
+    throw std::invalid_argument(name + ": needs a positive force limit, a unit yield axis and a positive, finite "
+                                "yield speed");
 }
 
 }  // namespace rice::xpbd

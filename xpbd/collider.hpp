@@ -2,7 +2,9 @@
 // (analytic signed distances) and any closed mesh as a sampled distance field
 // (distance_grid.hpp), each in its own frame, placed in the world by a rigid motion
 // prescribed over time (keyframes). A collider has infinite mass; friction against it uses the
-// displacement of its surface over the substep.
+// displacement of its surface over the substep. One with a force limit gives way, as a hand
+// does: pushed back by the grains harder than that along its yield axis, it slides back along
+// the axis from its keyframed pose (ColliderYield), and returns to it as the load falls.
 #pragma once
 
 #include <cmath>
@@ -32,6 +34,17 @@ struct ColliderKeyframe {
   double scale = 1.0;  ///< uniform, about the collider frame's origin
 };
 
+/// A yielding collider's offset from its keyframed pose along its yield axis, s(t) = offset +
+/// rate (t − time) ≥ 0 over one substep from `time`, and the force the grains put on it along
+/// the axis in the substep before. The contact solver sets it at each substep's start
+/// (next_yield). Run state, kept in checkpoints.
+struct ColliderYield {
+  double time = 0.0;    ///< [s]
+  double offset = 0.0;  ///< s [m]
+  double rate = 0.0;    ///< ṡ [m/s]
+  double force = 0.0;   ///< F [N], along the yield axis
+};
+
 struct Collider {
   ColliderShape shape = ColliderShape::kHalfSpace;
   Vec3 half_extents = Vec3::Zero();  ///< box [m]
@@ -46,7 +59,19 @@ struct Collider {
   /// [s] From this time on the collider is gone (a mould taken away); the sleeping bodies it
   /// touched wake.
   double removal_time = INFINITY;
+  /// [N] The most the collider pushes with along −yield_axis; INFINITY: kinematic, it pushes
+  /// with whatever force its keyframes take (a grain caught between it and the floor is
+  /// crushed).
+  double force_limit = INFINITY;
+  Vec3 yield_axis = Vec3::UnitZ();  ///< world, unit: the way it gives (up, for a lid)
+  /// [m/s] v_y: how fast it backs off at twice its force limit, and returns to its keyframes
+  /// with no load (next_yield).
+  double yield_speed = 0.01;
+  ColliderYield yield;
 };
+
+/// Whether the collider gives way past a force (Collider::force_limit).
+inline bool yields(const Collider& collider) { return std::isfinite(collider.force_limit); }
 
 /// Whether the collider is there at time t (before its removal time).
 inline bool collider_present(const Collider& collider, double time) { return time < collider.removal_time; }
@@ -63,8 +88,24 @@ inline Vec3 to_local(const ColliderKeyframe& pose, const Vec3& world) {
   return pose.rotation.conjugate() * (world - pose.translation) / pose.scale;
 }
 
-/// The collider's pose at time t.
+/// The collider's pose at time t: its keyframes', moved by its yield offset s(t) along its
+/// yield axis when it yields.
 ColliderKeyframe collider_pose(const Collider& collider, double time);
+
+/// The yield offset s(t) [m] (0 for a collider that does not yield).
+double yield_offset(const Collider& collider, double time);
+
+/// The yield over the substep [time, time + h], from the force of the substep before
+/// (collider.yield.force): with u ≥ 0 the speed its keyframes approach along −a and
+/// ℓ = F / F_max its load,
+///   ṡ = u clamp(ℓ, 0, 1) + v_y clamp(ℓ − 1, −1, 1),   s ≥ 0,
+/// so that at its limit it stands still (ṡ = u), past it backs off, and under it follows its
+/// keyframes, slowed in proportion to its load, and comes back to them at up to v_y.
+ColliderYield next_yield(const Collider& collider, double time, double h);
+
+/// How far a yielding collider can stand from where its current offset and keyframes put it
+/// after `span` seconds from `time` [m]: (u + v_y) span, a bound for the broad phase.
+double yield_reach(const Collider& collider, double time, double span);
 
 /// Signed distance φ (negative inside) and its gradient, the outward unit normal, at a point.
 struct SignedDistance {
@@ -87,7 +128,8 @@ inline SignedDistance posed_signed_distance(const Collider& collider, const Coll
 
 /// Throws std::invalid_argument naming the collider for sizes that are not positive and
 /// finite, friction coefficients below zero or μ_k > μ_s, keyframe times not increasing or
-/// keyframe scales that are not positive and finite.
+/// keyframe scales that are not positive and finite, and a force limit, yield axis or yield speed
+/// that is not positive, unit or finite.
 void validate(const Collider& collider, int index);
 
 }  // namespace rice::xpbd

@@ -234,8 +234,10 @@ void ContactSolver::add_collider_candidates(double time, double span, std::vecto
     const Collider& collider = model_.colliders[c];
     if (!collider_present(collider, time)) continue;
     const ColliderKeyframe start = collider_pose(collider, time), end = collider_pose(collider, time + span);
+    // A yielding collider may move in any substep, as far as yield_reach.
+    const double reach = yields(collider) ? yield_reach(collider, time, span) : 0.0;
     // A collider that goes in this interval wakes what rests on it, as one that moves.
-    const bool moving = !same_pose(start, end) || !collider_present(collider, time + span);
+    const bool moving = reach > 0.0 || !same_pose(start, end) || !collider_present(collider, time + span);
     if (moving != moving_ones) continue;
     for (size_t b = 0; b < bodies.size(); ++b) {
       if (bodies[b].asleep && !moving) continue;  // a sleeping body rests on a collider at rest
@@ -245,7 +247,7 @@ void ContactSolver::add_collider_candidates(double time, double span, std::vecto
       for (int s = 0; s < bodies[b].sphere_count(); ++s) {
         const Vec3& centre = centre_now_[sphere_offset_[b] + s];
         const Vec3 local = to_local(start, centre);
-        const double moved = (to_world(end, local) - centre).norm();
+        const double moved = (to_world(end, local) - centre).norm() + reach;
         if (posed_signed_distance(collider, start, local).distance - radius(static_cast<int>(b), s) < pad[b] + moved) {
           sphere_pairs_.push_back({s, 0});
           pushed = std::max(pushed, moved);
@@ -366,7 +368,8 @@ void ContactSolver::begin_substep(double time, double h, const Positions& x_prev
   pose_start_.clear();
   pose_end_.clear();
   present_.clear();
-  for (const Collider& collider : model_.colliders) {
+  for (Collider& collider : model_.colliders) {
+    if (yields(collider)) collider.yield = next_yield(collider, time, h);
     pose_start_.push_back(collider_pose(collider, time));
     pose_end_.push_back(collider_pose(collider, time + h));
     present_.push_back(collider_present(collider, time));
@@ -691,8 +694,11 @@ size_t ContactSolver::end_pair_substep(size_t first, bool end_of_interval, doubl
     if (state.key[0] != key[0] || state.key[1] != key[1]) break;
     const ContactPoints& p = located_[last] = locate(contact);
     deepest = std::max(deepest, -p.n.dot(p.pa - p.pb));
-    if (is_collider(key[1]))
-      collider_impulses_[collider_index(key[1])] -= (contact.lambda_normal * p.n + contact.friction) / h_;
+    if (is_collider(key[1])) {
+      const Vec3 impulse = (contact.lambda_normal * p.n + contact.friction) / h_;  // on the grain
+      collider_impulses_[collider_index(key[1])] -= impulse;
+      if (yields(model_.colliders[collider_index(key[1])])) substep_impulses_[collider_index(key[1])] -= impulse;
+    }
     state.interval_normal += contact.lambda_normal;
     state.interval_friction += contact.friction;
     normal += state.interval_normal;
@@ -742,10 +748,15 @@ void ContactSolver::end_substep(bool end_of_interval) {
   }
   double deepest = 0.0;
   collider_impulses_.resize(model_.colliders.size(), Vec3::Zero());
+  substep_impulses_.assign(model_.colliders.size(), Vec3::Zero());
   located_.resize(contacts_.size());
   interval_time_ += h_;
   for (size_t first = 0; first < contacts_.size();) first = end_pair_substep(first, end_of_interval, deepest);
   statistics_.max_penetration = deepest;
+  for (size_t c = 0; c < model_.colliders.size(); ++c) {
+    Collider& collider = model_.colliders[c];
+    if (yields(collider)) collider.yield.force = substep_impulses_[c].dot(collider.yield_axis) / h_;
+  }
   if (end_of_interval) {
     statistics_.collider_forces.resize(collider_impulses_.size());
     for (size_t c = 0; c < collider_impulses_.size(); ++c)
@@ -766,9 +777,10 @@ void ContactSolver::update_bonds() {
 /// in particle steps), the broad phase's sphere centres and time, the radii and their time,
 /// the centres, boxes and motions of sleeping bodies (not recomputed while they sleep: a run
 /// resumed with its parked grains' boxes left unset woke them), the collider impulses of the
-/// interval, the statistics (the deepest penetration so far) and the bonds. The broad phase's
-/// pairs are not kept, since every step starts with a broad phase (with them a 10,000-grain
-/// clump's checkpoint was 402 MB, without them 22.5 MB), and the rest is rebuilt each substep.
+/// interval, the statistics (the deepest penetration so far), the yielding colliders' offsets
+/// and the bonds. The broad phase's pairs are not kept, since every step starts with a broad
+/// phase (with them a 10,000-grain clump's checkpoint was 402 MB, without them 22.5 MB), and
+/// the rest is rebuilt each substep.
 template <class Self, class Archive>
 void ContactSolver::transfer_state(Self& self, Archive& archive) {
   auto& s = self.statistics_;
@@ -776,6 +788,8 @@ void ContactSolver::transfer_state(Self& self, Archive& archive) {
           self.centre_at_broad_phase_, self.broad_phase_time_, self.radius_, self.radii_time_, self.centres_at_rest_,
           self.start_box_, self.motion_,
           s.candidates, s.contacts, s.max_penetration, s.bonds, s.bonds_broken, s.collider_forces);
+  for (auto& collider : self.model_.colliders)
+    archive(collider.yield.time, collider.yield.offset, collider.yield.rate, collider.yield.force);
   bool bonds = self.bonds_.has_value();
   archive(bonds);
   if (bonds != self.bonds_.has_value()) throw std::runtime_error("the state's cohesion does not match the model's");

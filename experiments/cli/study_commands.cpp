@@ -466,6 +466,8 @@ class StudyCommands : public CommandFamily {
         ->check(number_in(0, 1, Ends::kOpenLow))->capture_default_str();
     c->add_option("--press-seconds", s.press_seconds, "the lid's way down, from 15 cm to its lowest [s]")
         ->check(number_in(0, 60, Ends::kOpenLow))->capture_default_str();
+    c->add_option("--lid-force", s.lid_force, "the lid's force limit [N], past which it gives way; 0: the case file's")
+        ->check(number_in(0, 1e6))->capture_default_str();
     c->add_option("--seed", s.seed, "the grains' seed in both cases (0: the case files' own)")->check(seed_value());
     c->add_option("--run-threads", s.threads, "threads of each run; 0: the machine's")->check(number_in(0, 1024));
     add(c, [this] { experiments::validate(hard_cases_settings()); },
@@ -484,6 +486,7 @@ class StudyCommands : public CommandFamily {
     settings.pressed_fraction = hard_cases_.pressed_fraction;  // the same defaults as the full study's
     settings.press_seconds = hard_cases_.press_seconds;
     settings.seed = hard_cases_.seed;
+    settings.lid_force = hard_cases_.lid_force;
     return settings;
   }
 

@@ -1,6 +1,7 @@
 // Colliders as drawn; see collider_drawing.hpp.
 #include "experiments/render/collider_drawing.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -106,9 +107,43 @@ grains::SurfaceMesh cutaway_walls(const grains::SurfaceMesh& room, const Eigen::
   return walls;
 }
 
+namespace {
+
+/// The yield offset at `time`, linear between the rows of yield.csv around it, the nearest
+/// row's beyond them.
+Eigen::Vector3d yielded_offset(const ColliderDrawing& collider, double time) {
+  const auto& rows = collider.yielded;
+  if (rows.empty()) return Eigen::Vector3d::Zero();
+  if (time <= rows.front().first) return rows.front().second;
+  if (time >= rows.back().first) return rows.back().second;
+  const auto next = std::upper_bound(rows.begin(), rows.end(), time,
+                                     [](double t, const auto& row) { return t < row.first; });
+  const auto& [t0, a] = *(next - 1);
+  const auto& [t1, b] = *next;
+  const double s = (time - t0) / (t1 - t0);
+  return (1.0 - s) * a + s * b;
+}
+
+/// yield.csv's rows into the drawings they name (the collider numbers of colliders.csv).
+void read_yield_offsets(const std::filesystem::path& path, std::vector<ColliderDrawing>& drawings) {
+  const NumericCsv table = read_numeric_csv(path);
+  for (const std::vector<double>& row : table.rows) {
+    const auto value = [&](const char* name) { return row[table.column(name)]; };
+    const double k = value("collider");
+    if (!(k >= 1.0 && k <= static_cast<double>(drawings.size())))
+      throw std::runtime_error(path.string() + ": a row names collider " + cell(k) + ", of " +
+                               cell(static_cast<long>(drawings.size())));
+    const Eigen::Vector3d axis(value("axis_x"), value("axis_y"), value("axis_z"));
+    drawings[static_cast<size_t>(k) - 1].yielded.emplace_back(value("time_s"), value("offset_m") * axis);
+  }
+}
+
+}  // namespace
+
 Eigen::Affine3d collider_placement(const ColliderDrawing& collider, double time) {
   const xpbd::ColliderKeyframe pose = xpbd::collider_pose(collider.motion, time);
-  return Eigen::Translation3d(pose.translation) * pose.rotation * Eigen::Scaling(pose.scale);
+  return Eigen::Translation3d(pose.translation + yielded_offset(collider, time)) * pose.rotation *
+         Eigen::Scaling(pose.scale);
 }
 
 Eigen::AlignedBox3d drawn_colliders_box(const std::vector<ColliderDrawing>& colliders,
@@ -170,6 +205,7 @@ std::vector<ColliderDrawing> read_collider_drawings(const std::filesystem::path&
         {value("time_s"), xpbd::Vec3(value("x"), value("y"), value("z")),
          xpbd::Quat(value("qw"), value("qx"), value("qy"), value("qz")), value("scale")});
   }
+  if (std::filesystem::exists(run / "yield.csv")) read_yield_offsets(run / "yield.csv", drawings);
   return drawings;
 }
 

@@ -34,6 +34,9 @@ struct ColliderDrawing {
   std::string material;      ///< plastic, wood, steel or ceramic
   xpbd::Collider motion;     ///< its keyframes and removal time (shape and sizes unused)
   bool hollow = false;       ///< a mould: `mesh` bounds the room inside it
+  /// A collider that yields (yield.csv): how far it stood back from its keyframes at each frame's
+  /// time, as (time [s], world offset [m]); empty for one that follows them.
+  std::vector<std::pair<double, Eigen::Vector3d>> yielded;
 };
 
 /// A hollow collider's walls as seen from `eye` (in the collider's frame): the triangles whose
@@ -41,7 +44,7 @@ struct ColliderDrawing {
 grains::SurfaceMesh cutaway_walls(const grains::SurfaceMesh& room, const Eigen::Vector3d& eye);
 
 /// Where the collider's frame is at `time` [s]: translation · rotation · scale, as the solver
-/// posed it (xpbd::collider_pose).
+/// posed it (xpbd::collider_pose), moved by its yield offset (linear between frames).
 Eigen::Affine3d collider_placement(const ColliderDrawing& collider, double time);
 
 /// The union of the colliders' boxes, each as posed at every one of `times` [s] when it is
@@ -57,7 +60,8 @@ grains::SurfaceMesh collider_surface(const xpbd::Collider& collider);
 /// colliders/collider_K.obj (K from 1) and colliders/colliders.csv; nothing for no colliders.
 void write_collider_drawings(const std::vector<ColliderDrawing>& drawings, const std::filesystem::path& run);
 
-/// What write_collider_drawings wrote (none when the run has no colliders/). Throws
+/// What write_collider_drawings wrote (none when the run has no colliders/), with the offsets
+/// of yield.csv when the run has it. Throws
 /// std::runtime_error naming the file for a table that does not match its meshes.
 std::vector<ColliderDrawing> read_collider_drawings(const std::filesystem::path& run);
 

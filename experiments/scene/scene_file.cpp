@@ -252,6 +252,11 @@ int read_collider(const toml::table& table, const std::string& source, const std
   c.dynamic_friction = section.number("dynamic_friction", std::min(scene.effects.dynamic_friction, c.static_friction));
   if (c.dynamic_friction > c.static_friction)
     section.require(false, "dynamic_friction", "at most static_friction (" + cell(c.static_friction) + ")");
+  c.force_limit = section.number("force_limit_n", INFINITY);
+  const xpbd::Vec3 axis = section.vector3("yield_axis");
+  section.require(axis.norm() > 0.0, "yield_axis", "a direction, not [0, 0, 0]");
+  c.yield_axis = axis.normalized();
+  c.yield_speed = section.number("yield_speed_m_s");
   const toml::node* keyframes = section.claim("keyframes");
   c.motion = keyframes ? read_keyframes(section, *keyframes, source, name) : std::vector{read_pose(section, 0.0)};
   const std::string material = section.choice("material");

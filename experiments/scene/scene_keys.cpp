@@ -200,6 +200,13 @@ std::vector<SceneKey> collider_keys() {
       number("colliders", "static_friction", closed(0, 10), {}, "μs against the grains", "the grains'"),
       number("colliders", "dynamic_friction", closed(0, 10), {}, "μk against the grains, at most static_friction",
              "the grains'"),
+      number("colliders", "force_limit_n", open_low(0, 1e6), {},
+             "the most it pushes with along −yield_axis [N]; pushed back harder, it gives way as a hand does",
+             "none: it follows its keyframes whatever the force"),
+      vector3("colliders", "yield_axis", 1e3, std::array<double, 3>{0.0, 0.0, 1.0},
+              "with force_limit_n: the way it gives (world; made unit length)"),
+      number("colliders", "yield_speed_m_s", open_low(0, 100), 0.01,
+             "with force_limit_n: how fast it gives at twice its limit and returns with no load [m/s]"),
   };
   for (SceneKey& key : pose_keys("colliders")) keys.push_back(std::move(key));
   keys.push_back({"colliders", "keyframes", KeyType::kKeyframes, {}, {}, {}, "one pose (position_m, axis, angle_deg)",

@@ -14,6 +14,7 @@
 #include "experiments/scene/section_observer.hpp"
 #include "experiments/scene/spout_emitter.hpp"
 #include "experiments/scene/stats_observer.hpp"
+#include "experiments/scene/yield_observer.hpp"
 
 namespace rice::experiments {
 
@@ -61,6 +62,7 @@ std::vector<std::unique_ptr<Observer>> make_observers(const Scene& scene, const 
   observers.push_back(std::make_unique<PileObserver>(folder, scene));
   if (const std::optional<double> drop = drop_time(scene)) observers.push_back(std::make_unique<ImpactObserver>(*drop));
   observers.push_back(std::make_unique<SectionObserver>(folder, scene));
+  if (any_collider_yields(scene)) observers.push_back(std::make_unique<YieldObserver>(folder));
   return observers;
 }
 

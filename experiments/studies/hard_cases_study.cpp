@@ -89,6 +89,7 @@ CaseOutcome bunny_pressed(const HardCasesStudySettings& s, const std::filesystem
   run.overrides.push_back(frames_to(held + 3.0));
   const std::string lid = lid_keyframes(start, s.pressed_fraction * height, s.press_seconds);
   run.overrides.push_back("colliders.2.keyframes=" + lid);
+  if (s.lid_force > 0.0) run.overrides.push_back("colliders.2.force_limit_n=" + cell(s.lid_force));
   run_scene_child(run, folder / "bunny_pressed", "hard cases: the bunny's press");
   CaseOutcome c = read_outcome(folder / "bunny_pressed");
   const NumericCsv stats = read_numeric_csv(folder / "bunny_pressed" / "stats.csv");
@@ -153,6 +154,7 @@ void validate(const HardCasesStudySettings& s) {
     throw std::invalid_argument("--pressed-fraction must be in (0, 1]");
   if (!(s.press_seconds > 0.0 && s.press_seconds <= 60.0))
     throw std::invalid_argument("--press-seconds must be in (0, 60]");
+  if (!(s.lid_force >= 0.0 && s.lid_force <= 1e6)) throw std::invalid_argument("--lid-force must be in [0, 1e6] N");
 }
 
 bool hard_cases_study_command(const HardCasesStudySettings& s, const std::filesystem::path& folder) {
@@ -173,6 +175,7 @@ bool hard_cases_study_command(const HardCasesStudySettings& s, const std::filesy
                                   {"fill_seconds", cell(s.fill_seconds)},
                                   {"pressed_fraction", cell(s.pressed_fraction)},
                                   {"press_seconds", cell(s.press_seconds)},
+                                  {"lid_force_n", s.lid_force > 0.0 ? cell(s.lid_force) : "the case file's"},
                                   {"seed", s.seed > 0 ? std::to_string(s.seed) : "the case files'"},
                                   {"overlap_limit_of_thickness", cell(s.overlap_limit)},
                                   {"threads", s.threads > 0 ? cell(s.threads) : "the machine's"}}));

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <numbers>
 
+#include "experiments/io/atomic_file.hpp"
 #include "experiments/scene/scene_file.hpp"
 #include "experiments/scene/scene_geometry_observer.hpp"
 
@@ -110,6 +111,26 @@ radius_m = 0.01
   EXPECT_LT(at.rotation.angularDistance(expected.rotation), 1e-12);
   EXPECT_FALSE(xpbd::collider_present(read[0].motion, 2.5));
   EXPECT_TRUE(read_collider_drawings(run).empty());  // a run without colliders
+}
+
+TEST(ColliderDrawing, AYieldingColliderIsDrawnWhereItStoodBack) {
+  // yield.csv (yield_observer.hpp) says how far the box stood back along its axis at each frame:
+  // drawn there, linear between frames; a row naming a collider the run does not have is refused.
+  const Scene scene = parse_scene("[[colliders]]\nshape = \"box\"\nhalf_extents_m = [0.03, 0.03, 0.005]\n"
+                                  "position_m = [0.0, 0.0, 0.02]\nforce_limit_n = 1\n",
+                                  "lid.toml");
+  const std::filesystem::path run = std::filesystem::temp_directory_path() / "rice_yield_drawing";
+  std::filesystem::remove_all(run);
+  write_collider_drawings(collider_drawings(scene), run);
+  const std::string header = "frame,time_s,collider,offset_m,force_n,axis_x,axis_y,axis_z\n";
+  write_file_atomically(run / "yield.csv", header + "30,1.0,1,0.002,1.0,0,0,1\n45,1.5,1,0.004,1.0,0,0,1\n");
+  const std::vector<ColliderDrawing> read = read_collider_drawings(run);
+  ASSERT_EQ(read.size(), 1u);
+  EXPECT_NEAR(collider_placement(read[0], 1.25).translation().z(), 0.023, 1e-12);
+  EXPECT_NEAR(collider_placement(read[0], 2.0).translation().z(), 0.024, 1e-12);
+  write_file_atomically(run / "yield.csv", header + "30,1.0,3,0.002,1.0,0,0,1\n");
+  EXPECT_THROW(read_collider_drawings(run), std::runtime_error);
+  std::filesystem::remove_all(run);
 }
 
 TEST(ColliderDrawing, TheBoxDrawnHoldsEveryPoseWhileThePieceIsPresent) {

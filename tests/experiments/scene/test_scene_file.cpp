@@ -321,6 +321,23 @@ TEST(SceneFile, OverridesReachACollidersKeysByItsNumber) {
   EXPECT_TRUE(error_of(two_boxes, {"colliders.1.colour=3"}).find("has no key 'colour'") != std::string::npos);
 }
 
+TEST(SceneFile, AColliderWithAForceLimitYieldsAlongItsAxis) {
+  const std::string lid = "[[colliders]]\nshape = \"box\"\nhalf_extents_m = [0.01, 0.01, 0.01]\n";
+  const xpbd::Collider kinematic = parse_scene(lid, "s.toml").colliders.at(0);
+  EXPECT_FALSE(xpbd::yields(kinematic));
+  const xpbd::Collider hand =
+      parse_scene(lid + "force_limit_n = 2.5\nyield_axis = [0, 3, 4]\n", "s.toml").colliders.at(0);
+  EXPECT_EQ(hand.force_limit, 2.5);
+  EXPECT_TRUE(hand.yield_axis.isApprox(xpbd::Vec3(0.0, 0.6, 0.8), 1e-15));
+  EXPECT_EQ(hand.yield_speed, 0.01);
+  EXPECT_TRUE(error_of(lid + "force_limit_n = 1\nyield_axis = [0, 0, 0]\n")
+                  .find("[colliders.1] yield_axis = [ 0, 0, 0 ]: expected a direction") != std::string::npos)
+      << error_of(lid + "force_limit_n = 1\nyield_axis = [0, 0, 0]\n");
+  EXPECT_TRUE(error_of(lid + "force_limit_n = 0\n").find("force_limit_n = 0: expected a number in (0, 1e6]") !=
+              std::string::npos)
+      << error_of(lid + "force_limit_n = 0\n");
+}
+
 TEST(SceneFile, RunWritesTheRunWithItsSceneAndABadSceneWritesNothing) {
   const std::filesystem::path out = std::filesystem::path(RICE_TEST_SCRATCH) / "scene-run";
   std::filesystem::remove_all(out);
