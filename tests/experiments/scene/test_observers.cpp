@@ -84,6 +84,7 @@ TEST(Observers, ARunWritesAStatsRowAndAPoseFilePerFrameAndItsMeasures) {
   EXPECT_EQ(lines_of(plain / "grains.csv"), 1 + 6);
   EXPECT_FALSE(fs::exists(plain / "section.png"));
   EXPECT_FALSE(fs::exists(plain / "chawan.obj"));
+  EXPECT_FALSE(fs::exists(plain / "yield.csv"));  // no collider gives way
   EXPECT_EQ(result.in_container, -1);
   EXPECT_GT(result.simulation_seconds, 0.0);
   const std::string info = text_of(plain / "run_info.txt");
@@ -96,6 +97,20 @@ TEST(Observers, ARunWritesAStatsRowAndAPoseFilePerFrameAndItsMeasures) {
   fs::remove_all(meshes);
   run_scene(scene, meshes);
   EXPECT_EQ(files_with(meshes / "frames", ".ply"), 4);
+
+  // A collider that gives way past a force: a row a frame in yield.csv.
+  scene.effects.render_meshes = false;
+  xpbd::Collider lid;
+  lid.shape = xpbd::ColliderShape::kBox;
+  lid.half_extents = xpbd::Vec3(0.02, 0.02, 0.005);
+  lid.motion.front().translation = xpbd::Vec3(0.0, 0.0, 0.2);
+  lid.force_limit = 1.0;
+  scene.colliders.push_back(lid);
+  scene.collider_materials.push_back("wood");
+  const fs::path yielding = fs::path(RICE_TEST_SCRATCH) / "observers-yield";
+  fs::remove_all(yielding);
+  run_scene(scene, yielding);
+  EXPECT_EQ(lines_of(yielding / "yield.csv"), 1 + 4);
 }
 
 TEST(ImpactObserver, WatchesAClumpFromTheStartAndACupFromItsRemovalAndNothingElse) {
