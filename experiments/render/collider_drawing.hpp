@@ -36,7 +36,7 @@ struct ColliderDrawing {
   bool hollow = false;       ///< a mould: `mesh` bounds the room inside it
   /// A collider that yields (yield.csv): how far it stood back from its keyframes at each frame's
   /// time, as (time [s], world offset [m]); empty for one that follows them.
-  std::vector<std::pair<double, Eigen::Vector3d>> yielded;
+  std::vector<std::pair<double, Eigen::Vector3d>> yielded = {};
 };
 
 /// A hollow collider's walls as seen from `eye` (in the collider's frame): the triangles whose

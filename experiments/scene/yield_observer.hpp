@@ -1,8 +1,8 @@
 // yield.csv of a run with colliders that give way past a force ([[colliders]] force_limit_n):
 // a row per frame and yielding collider, with how far it stands back from its keyframed pose
 // along its yield axis (and the axis), and the mean force the grains put on it along that axis
-// over the last broad-phase interval. Listed only for scenes with such a collider. `rice render --run`
-// draws each collider where this says it was.
+// over the last broad-phase interval. Listed only for scenes with such a collider.
+// `rice render --run` draws each collider where this says it was.
 #pragma once
 
 #include <filesystem>

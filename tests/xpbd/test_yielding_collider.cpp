@@ -61,7 +61,7 @@ SolverSettings press_settings() {
 }
 
 TEST(YieldingCollider, FollowsItsRuleForTheRateOfGivingWay) {
-  // ṡ = u min(ℓ, 1) + v_y clamp(ℓ − 1, −1, 1), s ≥ 0: the lid's keyframes come down at
+  // ṡ = u clamp(ℓ, 0, 1) + v_y clamp(ℓ − 1, −1, 1), s ≥ 0: the lid's keyframes come down at
   // u = 0.02 m/s (2 mm in 0.1 s) until 0.1 s; F_max = 2 N, v_y = 0.05 m/s.
   Collider lid = pressing_lid(2.0, 1.0);
   lid.yield_speed = 0.05;
