@@ -697,7 +697,7 @@ size_t ContactSolver::end_pair_substep(size_t first, bool end_of_interval, doubl
     if (is_collider(key[1])) {
       const Vec3 impulse = (contact.lambda_normal * p.n + contact.friction) / h_;  // on the grain
       collider_impulses_[collider_index(key[1])] -= impulse;
-      if (yields(model_.colliders[collider_index(key[1])])) substep_impulses_[collider_index(key[1])] -= impulse;
+      substep_impulses_[collider_index(key[1])] -= impulse;
     }
     state.interval_normal += contact.lambda_normal;
     state.interval_friction += contact.friction;

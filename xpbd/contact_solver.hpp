@@ -239,7 +239,7 @@ class ContactSolver {
   Model& model_;
   bool parallel_;
   std::vector<BodyPair> body_pairs_;
-  std::vector<Vec3> substep_impulses_;   ///< on each yielding collider this substep [N s]
+  std::vector<Vec3> substep_impulses_;   ///< on each collider this substep [N s]
   std::vector<Vec3> collider_impulses_;  ///< on each collider since the interval began [N s]
   double interval_time_ = 0.0;           ///< its length so far [s]
   std::vector<std::array<int, 2>> sphere_pairs_;
