@@ -37,16 +37,17 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # solvers (ContactStudy.Hertz) and the sphere-mesh walk (SubsurfaceBake.SphereMesh).
 # RenderCommands took 320 s here: its renders and studies run the renderer, the path tracer,
 # the AOVs and the crop merge that test_shading and the ExrChannels and MergeCrops tests run.
-# ResumeSoft and ScaleStudyQuick run whole scenes as ResumeRigid does (the state archive and
-# the checkpoint file are sanitized there and in test_checkpoint and the fuzz replay), and so
+# ResumeSoft, ScaleStudyQuick and SleepStudyQuick (125 s here) run whole scenes as ResumeRigid
+# does (the state archive and the checkpoint file are sanitized there and in test_checkpoint and
+# the fuzz replay; the sleep study's error measure in test_sleep_study), and so
 # does HardCasesStudyQuick (over 4 min here; its checks, xpbd/model_health.hpp, are sanitized
-# in NeoHookeanHardCases). It also FAILS in this build, a known defect (docs/known-limits.md,
-# "Scale"): clang's grain meshes, pressed to 80%, keep 41 tets inverted after the release.
+# in NeoHookeanHardCases). It passes in this build since its lid gives way past 5 N (with a
+# kinematic lid clang's grain meshes kept 41 tets inverted; docs/known-limits.md, "Scale").
 # The workflow tests (Workflow*) test the workflow and the cluster, not C++: the commands they
 # run are sanitized in their own tests.
 skipped='AngleOfRepose.CohesionRaisesTheAngleOfAPouredHeap|Compression.FiveHundredSoftGrains'
 skipped+='|Energy.DampedMotionNeverGainsEnergy|SceneDigests|TetQualityStudyQuick|SceneConvergenceStudyQuick'
 skipped+='|ShippedScenes.EachRunsAFrameAsItShips|ContactStudyQuick|Table1.RunsTheFourScenes|SceneCommand|RenderCommands'
 skipped+='|SoftPileEnergy|ConvergenceStudyQuick|ContactStudy.BothSolversPressTwoGrains|SubsurfaceBake.SphereMesh'
-skipped+='|ResumeSoft|ScaleStudyQuick|HardCasesStudyQuick|Workflow'
+skipped+='|ResumeSoft|ScaleStudyQuick|SleepStudyQuick|HardCasesStudyQuick|Workflow'
 ctest --test-dir build-sanitize --output-on-failure -j "$(nproc)" -E "$skipped"
