@@ -2,6 +2,7 @@
 #include "xpbd/model_health.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "xpbd/tet_stencil.hpp"
 
@@ -14,14 +15,16 @@ bool state_finite(const Model& model) {
          });
 }
 
-int inverted_tets(const Model& model) {
-  int inverted = 0;
+TetVolumeRatios tet_volume_ratios(const Model& model) {
+  TetVolumeRatios volumes;
   for (const NeoHookeanTet& t : model.neo_hookean) {
     Vec12 x;
     for (int k = 0; k < 4; ++k) x.segment<3>(3 * k) = model.particles.x.row(t.particles[k]).transpose();
-    inverted += signed_volume(x) <= 0.0;
+    const double ratio = signed_volume(x) / t.rest_volume;  // det F
+    volumes.inverted += ratio <= 0.0;
+    volumes.smallest = std::fmin(volumes.smallest, ratio);  // fmin skips the first NaN
   }
-  return inverted;
+  return volumes;
 }
 
 }  // namespace rice::xpbd

@@ -1,6 +1,7 @@
 // CSV tables; see csv_table.hpp.
 #include "experiments/io/csv_table.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <sstream>
 #include <stdexcept>
@@ -15,6 +16,12 @@ void CsvTable::add_row(const std::vector<std::string>& cells) {
     throw std::logic_error("CsvTable: row has " + std::to_string(cells.size()) + " cells, header " +
                            std::to_string(header_.size()));
   rows_.push_back(cells);
+}
+
+size_t CsvTable::column(const std::string& name) const {
+  const auto it = std::find(header_.begin(), header_.end(), name);
+  if (it == header_.end()) throw std::out_of_range("CsvTable: no column " + name);
+  return static_cast<size_t>(it - header_.begin());
 }
 
 std::string CsvTable::text() const {

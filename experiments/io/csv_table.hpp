@@ -17,6 +17,8 @@ class CsvTable {
   /// The rows so far, and replacing them (a run resumed from a checkpoint).
   const std::vector<std::vector<std::string>>& rows() const { return rows_; }
   void set_rows(std::vector<std::vector<std::string>> rows) { rows_ = std::move(rows); }
+  /// The index of the column named `name`; std::out_of_range if there is none.
+  size_t column(const std::string& name) const;
 
  private:
   std::vector<std::string> header_;

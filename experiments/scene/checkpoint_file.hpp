@@ -19,7 +19,7 @@
 namespace rice::experiments {
 
 /// Bumped whenever what a part saves changes.
-inline constexpr std::uint32_t kCheckpointVersion = 3;
+inline constexpr std::uint32_t kCheckpointVersion = 4;
 
 struct Checkpoint {
   std::uint64_t scene_digest = 0;

@@ -45,7 +45,7 @@ compared=0
 while IFS= read -r file; do
   case $file in
     */run_info.txt) continue ;;
-    */stats.csv) cmp -s <(cut -d, -f1,2,4-11 "$out/local/$file") <(cut -d, -f1,2,4-11 "$out/slurm/$file") ;;
+    */stats.csv) cmp -s <(cut -d, -f1,2,4-13 "$out/local/$file") <(cut -d, -f1,2,4-13 "$out/slurm/$file") ;;
     *) cmp -s "$out/local/$file" "$out/slurm/$file" ;;
   esac || { echo "the Slurm run's $file differs from the local run's" >&2; exit 1; }
   compared=$((compared + 1))

@@ -5,6 +5,8 @@
 // reference solver are in tests/fem_reference/test_reference_hard_cases.cpp.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "tests/xpbd/model_fixtures.hpp"
 #include "xpbd/energy.hpp"
 #include "xpbd/model_health.hpp"
@@ -69,6 +71,21 @@ TEST(HardCases, MassRatioOneToTenThousandStaysFiniteAndBounded) {
   swing_and_check(model, 20, 10);
   // Gauss–Seidel converges slowly when one mass dominates: the chain stretches, but boundedly.
   EXPECT_LT(max_relative_stretch(model), 0.5);
+}
+
+TEST(ModelHealth, TetVolumeRatiosAreDetFAndCountTheFlatOrInvertedTets) {
+  Model model = neo_hookean_block(0.05, 2, 1e5, 0.3, 1e-3);
+  EXPECT_EQ(tet_volume_ratios(model).inverted, 0);
+  EXPECT_NEAR(tet_volume_ratios(model).smallest, 1.0, 1e-12);  // at rest
+  model.particles.x *= 2.0;                                      // every volume 8 times
+  EXPECT_NEAR(tet_volume_ratios(model).smallest, 8.0, 1e-9);
+  // One particle moved through its tets' opposite faces: some turn over, the smallest with it.
+  model.particles.x.row(0) = Vec3(0.3, 0.3, 0.3).transpose();
+  const TetVolumeRatios moved = tet_volume_ratios(model);
+  EXPECT_GT(moved.inverted, 0);
+  EXPECT_EQ(moved.inverted, inverted_tets(model));
+  EXPECT_LT(moved.smallest, 0.0);
+  EXPECT_TRUE(std::isnan(tet_volume_ratios(Model{}).smallest));  // no elastic tets
 }
 
 /// The Neo-Hookean cases run with XPBD's constraint projections and with vertex block descent.

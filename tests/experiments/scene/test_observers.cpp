@@ -3,10 +3,13 @@
 // only when asked, and on a plate no section; every observer's measures reach run_info.txt.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 
+#include "experiments/io/numeric_csv.hpp"
 #include "experiments/scene/clump_emitter.hpp"
 #include "experiments/scene/impact_observer.hpp"
 #include "experiments/scene/render_mesh_observer.hpp"
@@ -111,6 +114,42 @@ TEST(Observers, ARunWritesAStatsRowAndAPoseFilePerFrameAndItsMeasures) {
   fs::remove_all(yielding);
   run_scene(scene, yielding);
   EXPECT_EQ(lines_of(yielding / "yield.csv"), 1 + 4);
+}
+
+TEST(Observers, StatsGiveEachFramesInvertedTetsAndSmallestVolumeRatioOfSoftGrains) {
+  Scene scene;
+  scene.container.kind = Container::kPlate;
+  scene.emitter.kind = EmitterKind::kClump;
+  scene.grains.count = 2;
+  scene.grains.variants = 1;
+  scene.solver.frames = 3;
+  const fs::path rigid = fs::path(RICE_TEST_SCRATCH) / "observers-tets-rigid";
+  fs::remove_all(rigid);
+  run_scene(scene, rigid);
+  const NumericCsv rigid_stats = read_numeric_csv(rigid / "stats.csv");
+  for (const std::vector<double>& row : rigid_stats.rows) {
+    EXPECT_EQ(row[rigid_stats.column("inverted_tets")], 0.0);
+    EXPECT_TRUE(std::isnan(row[rigid_stats.column("smallest_volume_ratio")]));  // no tets
+  }
+  EXPECT_EQ(text_of(rigid / "run_info.txt").find("smallest_volume_ratio_over_frames"), std::string::npos);
+
+  scene.grains.body = xpbd::BodyKind::kSoft;
+  const fs::path soft = fs::path(RICE_TEST_SCRATCH) / "observers-tets-soft";
+  fs::remove_all(soft);
+  run_scene(scene, soft);
+  const NumericCsv stats = read_numeric_csv(soft / "stats.csv");
+  ASSERT_EQ(stats.rows.size(), 3u);
+  double smallest = INFINITY;
+  for (const std::vector<double>& row : stats.rows) {  // two grains falling and landing: near their rest volume
+    EXPECT_EQ(row[stats.column("inverted_tets")], 0.0);
+    EXPECT_NEAR(row[stats.column("smallest_volume_ratio")], 1.0, 0.2);
+    smallest = std::min(smallest, row[stats.column("smallest_volume_ratio")]);
+  }
+  const std::string info = text_of(soft / "run_info.txt");
+  EXPECT_NE(info.find("inverted_tets_most_in_a_frame: 0\n"), std::string::npos);
+  const std::string key = "smallest_volume_ratio_over_frames: ";
+  ASSERT_NE(info.find(key), std::string::npos);
+  EXPECT_EQ(std::stod(info.substr(info.find(key) + key.size())), smallest);  // the column's least
 }
 
 TEST(ImpactObserver, WatchesAClumpFromTheStartAndACupFromItsRemovalAndNothingElse) {
