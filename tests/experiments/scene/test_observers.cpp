@@ -40,6 +40,17 @@ std::string text_of(const fs::path& path) {
   return {std::istreambuf_iterator<char>(in), {}};
 }
 
+/// A few grains of one variant dropped as a clump onto a plate.
+Scene clump_on_a_plate(int grains, int frames) {
+  Scene scene;
+  scene.container.kind = Container::kPlate;
+  scene.emitter.kind = EmitterKind::kClump;
+  scene.grains.count = grains;
+  scene.grains.variants = 1;
+  scene.solver.frames = frames;
+  return scene;
+}
+
 int render_mesh_observers(const Scene& scene) {
   int n = 0;
   for (const auto& observer : make_observers(scene, fs::path(RICE_TEST_SCRATCH) / "unused"))
@@ -71,12 +82,7 @@ TEST(Observers, AMouldsRoomCountsItsGrainsInItsLastPoseBeforeItGoes) {
 }
 
 TEST(Observers, ARunWritesAStatsRowAndAPoseFilePerFrameAndItsMeasures) {
-  Scene scene;
-  scene.container.kind = Container::kPlate;
-  scene.emitter.kind = EmitterKind::kClump;
-  scene.grains.count = 6;
-  scene.grains.variants = 1;
-  scene.solver.frames = 4;
+  Scene scene = clump_on_a_plate(6, 4);
   const fs::path plain = fs::path(RICE_TEST_SCRATCH) / "observers-plain";
   fs::remove_all(plain);
   const SceneResult result = run_scene(scene, plain);
@@ -117,12 +123,7 @@ TEST(Observers, ARunWritesAStatsRowAndAPoseFilePerFrameAndItsMeasures) {
 }
 
 TEST(Observers, StatsGiveEachFramesInvertedTetsAndSmallestVolumeRatioOfSoftGrains) {
-  Scene scene;
-  scene.container.kind = Container::kPlate;
-  scene.emitter.kind = EmitterKind::kClump;
-  scene.grains.count = 2;
-  scene.grains.variants = 1;
-  scene.solver.frames = 3;
+  Scene scene = clump_on_a_plate(2, 3);
   const fs::path rigid = fs::path(RICE_TEST_SCRATCH) / "observers-tets-rigid";
   fs::remove_all(rigid);
   run_scene(scene, rigid);
