@@ -696,7 +696,6 @@ size_t ContactSolver::end_pair_substep(size_t first, bool end_of_interval, doubl
     deepest = std::max(deepest, -p.n.dot(p.pa - p.pb));
     if (is_collider(key[1])) {
       const Vec3 impulse = (contact.lambda_normal * p.n + contact.friction) / h_;  // on the grain
-      collider_impulses_[collider_index(key[1])] -= impulse;
       substep_impulses_[collider_index(key[1])] -= impulse;
     }
     state.interval_normal += contact.lambda_normal;
@@ -756,6 +755,7 @@ void ContactSolver::end_substep(bool end_of_interval) {
   for (size_t c = 0; c < model_.colliders.size(); ++c) {
     Collider& collider = model_.colliders[c];
     if (yields(collider)) collider.yield.force = substep_impulses_[c].dot(collider.yield_axis) / h_;
+    collider_impulses_[c] += substep_impulses_[c];
   }
   if (end_of_interval) {
     statistics_.collider_forces.resize(collider_impulses_.size());
