@@ -20,7 +20,7 @@ set size ratio -1
 set xlabel 'x [m]'
 set ylabel 'y [m]'
 )";
-  if (!settings.plate) {
+  if (settings.holder == PileHolder::kBowl) {
     const std::string rim = cell(settings.rim_radius);
     render_plot(folder, "pile", top_and_side + R"(set title 'The pile from the top (grain centres; the rim)'
 set parametric
@@ -37,13 +37,18 @@ unset multiplot
     return std::nullopt;
   }
   std::optional<HeapProfile> fitted;
-  try {
-    fitted = heap_profile(centres, settings.ring_width);
-  } catch (const std::invalid_argument&) {
-    // Grains scattered one deep (a dry clump dropped): no flank to fit.
+  if (settings.holder == PileHolder::kPlate) {
+    try {
+      fitted = heap_profile(centres, settings.ring_width);
+    } catch (const std::invalid_argument&) {
+      // Grains scattered one deep (a dry clump dropped): no flank to fit.
+    }
   }
   if (!fitted) {
-    render_plot(folder, "pile", top_and_side + R"(set title 'The grains from the top (centres): scattered, no heap'
+    const std::string what = settings.holder == PileHolder::kMould
+                                 ? "The grains in the mould from the top (centres)"
+                                 : "The grains from the top (centres): scattered, no heap";
+    render_plot(folder, "pile", top_and_side + "set title '" + what + R"('
 plot 'final_centres.csv' using 2:3 with points pt 7 ps 0.5 notitle
 set xlabel 'x [m]'
 set ylabel 'z [m]'

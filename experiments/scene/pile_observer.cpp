@@ -27,9 +27,10 @@ void PileObserver::end(const World& world, const Stepper&, SceneReport& report) 
   r.top = world.top();
   r.released = world.released;
   r.grain_length = world.grain_length;
-  const std::optional<HeapProfile> fitted = write_pile_plot(
-      folder_, centres,
-      {.plate = plate_, .cohesion = cohesion_, .rim_radius = world.bowl.rim_radius, .ring_width = 0.5 * world.grain_length});
+  const std::optional<HeapProfile> fitted =
+      write_pile_plot(folder_, centres,
+                      {.holder = holder_, .cohesion = cohesion_, .rim_radius = world.bowl.rim_radius,
+                       .ring_width = 0.5 * world.grain_length});
   const double nan = std::numeric_limits<double>::quiet_NaN();
   r.angle_of_repose_degrees = fitted ? fitted->angle_degrees : nan;
   r.heap_height = fitted ? fitted->apex_height : nan;

@@ -1,14 +1,20 @@
 // The angle of repose (angle_of_repose.hpp): exact on a sampled cone, refused without a flank,
-// and measured on heaps poured from a spout onto a plate: the dry heap's angle lies between 20°
-// and 40° (issue 10), and water-content cohesion raises it.
+// fitted on a plate and not in a mould (pile_plot.hpp), and measured on heaps poured from a spout
+// onto a plate: the dry heap's angle lies between 20° and 40° (issue 10), and water-content
+// cohesion raises it.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <random>
 #include <stdexcept>
+#include <vector>
 
+#include "experiments/io/atomic_file.hpp"
+#include "experiments/io/csv_table.hpp"
 #include "experiments/pile/angle_of_repose.hpp"
+#include "experiments/pile/pile_plot.hpp"
 #include "experiments/scene/scene_run.hpp"
 
 namespace rice::experiments {
@@ -45,6 +51,29 @@ TEST(AngleOfRepose, RefusesAHeapWithoutAFlank) {
   EXPECT_THROW(heap_profile({}, 1e-3), std::invalid_argument);
   EXPECT_THROW(heap_profile(cone(30.0, 0.02), 0.0), std::invalid_argument);
   EXPECT_THROW(heap_profile({Vec3(0, 0, 0), Vec3(1e-4, 0, 0.01)}, 1e-3), std::invalid_argument);
+}
+
+TEST(AngleOfRepose, IsFittedOnAPlateAndNotInAMouldWhoseWallsShapeThePile) {
+  // The same centres (a 30° cone) as a heap on a plate and as rice in a mould: a mould's pile
+  // has no flank of its own, so pile.png shows it from the top and the side only.
+  const std::vector<Vec3> centres = cone(30.0, 0.02);
+  CsvTable table({"grain", "x", "y", "z", "r"});
+  for (size_t g = 0; g < centres.size(); ++g)
+    table.add_row({cell(static_cast<long>(g)), cell(centres[g].x()), cell(centres[g].y()), cell(centres[g].z()), "0"});
+  for (const PileHolder holder : {PileHolder::kPlate, PileHolder::kMould}) {
+    const bool plate = holder == PileHolder::kPlate;
+    const auto folder = std::filesystem::path(RICE_TEST_SCRATCH) / (plate ? "pile-plate" : "pile-mould");
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    write_file_atomically(folder / "final_centres.csv", table.text());
+    const std::optional<HeapProfile> fitted = write_pile_plot(folder, centres, {.holder = holder, .ring_width = 1e-3});
+    EXPECT_EQ(fitted.has_value(), plate);
+    if (fitted) {
+      EXPECT_NEAR(fitted->angle_degrees, 30.0, 0.5);
+    }
+    EXPECT_EQ(std::filesystem::exists(folder / "heap_profile.csv"), plate);
+    EXPECT_TRUE(std::filesystem::exists(folder / "pile.gp"));
+  }
 }
 
 TEST(AngleOfRepose, CohesionRaisesTheAngleOfAPouredHeap) {
