@@ -24,6 +24,7 @@ void validate_grains_and_solver(const Scene& s) {
   require(s.grains.min_vertices <= s.grains.max_vertices,
           "need [grains] min_vertices <= max_vertices, got " + cell(s.grains.min_vertices) + " and " +
               cell(s.grains.max_vertices));
+  check(scene_key("grains", "vertex_mass_floor"), s.grains.vertex_mass_floor);
   check(scene_key("grains", "poisson"), s.grains.poisson);
   require(s.grains.elasticity != xpbd::TetMaterial::kCorotated || s.grains.poisson > 0.0,
           "[grains] elasticity = 'corotated' needs poisson > 0 (its volume term's stiffness is the Lamé "

@@ -101,6 +101,7 @@ void read_grains(TomlSection section, SceneGrains& g) {
       section.require(false, "max_vertices", "at least min_vertices (" + cell(g.min_vertices) + ")");
     section.require(false, "min_vertices", "at most max_vertices (" + cell(g.max_vertices) + ")");
   }
+  g.vertex_mass_floor = section.number("vertex_mass_floor");
   g.poisson = section.number("poisson");
   section.require(g.elasticity != xpbd::TetMaterial::kCorotated || g.poisson > 0.0, "poisson",
                   "> 0 with elasticity = 'corotated' (its volume term's stiffness is the Lame lambda)");

@@ -78,6 +78,9 @@ std::vector<SceneKey> scene_and_grain_keys() {
               "rigid grains' collision spheres fit its surface"),
       integer("grains", "max_vertices", closed(4, 1000), 60.0,
               "the most vertices of a grain's simulation mesh; a coarser mesh takes larger XPBD steps"),
+      number("grains", "vertex_mass_floor", closed(0, 0.9), 0.5,
+             "soft grains' lightest vertex mass, a fraction of their mean, keeping each grain's mass and centre of "
+             "mass: a coarse mesh's light tip is what one XPBD sweep turns inside out (0: the lumped masses)"),
       number("grains", "poisson", open(-1, 0.5), 0.3, "soft grains' Poisson's ratio"),
       number("grains", "soak_minutes", open_low(0, 1e5), 120.0,
              "soaking time [min]: with the temperature it sets the water content, hence the damping (eq. 4) and "
@@ -126,7 +129,7 @@ std::vector<SceneKey> solver_container_emitter_keys() {
               "required"),
       number("emitter", "round_s", open_low(0, 1e3), 0.05,
              "fill: the time between rounds [s]; each round drops grains, randomly turned, at the free points of a "
-             "jittered lattice 1.25 grain lengths apart, lowest first"),
+             "lattice 1.1 grain lengths apart, shifted at random each round, lowest first"),
   };
 }
 

@@ -57,6 +57,7 @@ RunInfoEntries scene_entries(const Scene& scene, const World& world) {
           {"radius_interval_s", cell(scene.solver.radius_interval)},
           {"young_pa", cell(scene.grains.young)},
           {"mesh_vertices", mesh_vertex_range(world)},
+          {"vertex_mass_floor", rigid ? "n/a" : cell(scene.grains.vertex_mass_floor)},
           {"rayleigh_time_s", cell(world.rayleigh_time)},
           {"cohesion", scene.effects.cohesion ? "on" : "off"},
           {"damping", scene.effects.damping ? "on" : "off"},

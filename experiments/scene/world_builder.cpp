@@ -11,6 +11,7 @@
 #include "grains/random_stream.hpp"
 #include "grains/tet_quality.hpp"
 #include "grains/water_content.hpp"
+#include "xpbd/vertex_mass_floor.hpp"
 
 namespace rice::experiments {
 namespace {
@@ -74,8 +75,10 @@ void add_colliders(const Scene& scene, World& world) {
 int add_soft_grain(const Scene& scene, double tau, xpbd::Model& model, const xpbd::TetMesh& mesh, double density,
                    const xpbd::LameParameters& material, const xpbd::SphereSet& spheres) {
   const bool strain_rate = scene.solver.vertex_block_descent && scene.solver.vbd_strain_rate_damping;
-  return xpbd::add_soft_body(model, mesh, density, material, strain_rate ? 0.0 : tau, spheres, strain_rate ? tau : 0.0,
-                             scene.grains.elasticity);
+  const int body = xpbd::add_soft_body(model, mesh, density, material, strain_rate ? 0.0 : tau, spheres,
+                                       strain_rate ? tau : 0.0, scene.grains.elasticity);
+  xpbd::floor_vertex_masses(model, body, scene.grains.vertex_mass_floor);
+  return body;
 }
 
 /// Each grain's body at its build point moved to its parking place, asleep; its bond strength

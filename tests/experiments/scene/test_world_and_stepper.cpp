@@ -1,8 +1,8 @@
 // The world builder (experiments/scene/world_builder.hpp), the world's grain operations and the
 // stepper: every grain is built parked and asleep beside the colliders in their order; the
-// effects a scene leaves off are off in the model, and its sleep rule reaches it; a rigid
-// grain's render mesh rides its pose; the stepper steps a frame with the scene's substeps and
-// method.
+// effects a scene leaves off are off in the model, its sleep rule and soft grains' vertex mass
+// floor reach it; a rigid grain's render mesh rides its pose; the stepper steps a frame with the
+// scene's substeps and method.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -105,6 +105,23 @@ TEST(WorldBuilder, VertexBlockDescentTakesTheSoaksDampingAsStrainRateDampingUnle
   const xpbd::NeoHookeanTet paper_tet = first_tet();
   EXPECT_EQ(paper_tet.beta_deviatoric, xpbd_tet.beta_deviatoric);
   EXPECT_EQ(paper_tet.strain_rate_damping, 0.0);
+}
+
+TEST(WorldBuilder, SoftGrainsVertexMassesHaveTheScenesFloorWithTheirMassAndCentre) {
+  Scene scene = soft_grains_on_a_plate(1);
+  const auto masses = [&](double floor) {
+    scene.grains.vertex_mass_floor = floor;
+    SpoutEmitter emitter(scene.emitter, scene.container);
+    const World world = build_world(scene, emitter);
+    return std::pair{Eigen::VectorXd(world.model.particles.w.cwiseInverse()), world.model.particles.x};
+  };
+  const auto [lumped, x] = masses(0.0);
+  const auto [floored, same_x] = masses(0.5);
+  EXPECT_EQ(x, same_x);
+  EXPECT_LT(lumped.minCoeff(), 0.5 * lumped.mean());  // a light tip, as a coarse mesh has
+  EXPECT_GE(floored.minCoeff(), 0.5 * lumped.mean() * (1.0 - 1e-9));
+  EXPECT_NEAR(floored.sum(), lumped.sum(), 1e-12 * lumped.sum());
+  EXPECT_LT((x.transpose() * floored - x.transpose() * lumped).norm(), 1e-12 * lumped.sum());
 }
 
 TEST(World, ARigidGrainsRenderMeshRidesItsPose) {
