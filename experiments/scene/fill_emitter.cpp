@@ -43,10 +43,13 @@ void FillEmitter::lay_out(World& world) {
 void FillEmitter::emit(World& world, double time) {
   if (world.released == world.count() || time < next_round_ - 1e-9 || time >= std::min(seconds_, mould(world).removal_time))
     return;
-  // A round: the lattice points moved by this round's offsets, those no grain is near, lowest
-  // first.
+  // A round: the lattice shifted by a random fraction of a cell in x and y (with one lattice for
+  // every round, grains dropped at its points stacked in columns that showed in the moulded
+  // shapes), its points moved by this round's offsets, those no grain is near, lowest first.
+  const xpbd::Vec3 shift(random_.uniform(0.0, 1.0), random_.uniform(0.0, 1.0), 0.0);
   const double offset = 0.5 * (kCellInGrainLengths - 1.0) * clearance_;
-  std::vector<xpbd::Vec3> points = lattice_;
+  std::vector<xpbd::Vec3> points =
+      mould_lattice(mould(world), xpbd::Vec3::Constant(kCellInGrainLengths * clearance_), shift);
   for (xpbd::Vec3& p : points)
     p += xpbd::Vec3(random_.uniform(-offset, offset), random_.uniform(-offset, offset), random_.uniform(-offset, offset));
   for (const xpbd::Vec3& spot : free_points(points, world.released_centres(), clearance_)) {

@@ -1,16 +1,19 @@
 // The fill ([emitter] kind = "fill"): grains are dropped into a hollow mesh collider (a mould)
-// the way a cook drops rice in by the handful, in rounds `round_s` apart for `seconds`. Each grain keeps the
-// random orientation it was made with (uniform on SO(3)). A round drops grains, lowest first,
-// at the release points no grain is near: the points of a lattice inside the mould
-// (mould_fill.hpp) whose cubes are 1.25 grain lengths L across, each moved by a random offset
-// of up to L/8 per axis, so that no two grains a round releases can touch (their centres stay
-// L apart) and no two rounds release on the same lattice. The grains leave moving down at 1 m/s,
-// as from a hand 5 cm above, fall, tumble and settle; with rounds a few hundredths of a second
-// apart the fill is a steady rain that frees the top points again as fast as the grains fall
-// (released at rest, the bunny's mould took 1981 grains in 3.5 s; at 1 m/s, 2502). (An earlier fill built the grains along the axes at
-// the points of a lattice of their boxes: it packed denser per round, but the moulded shapes
-// showed the lattice, which no cook's fill does.) Rounds stop when the mould is removed;
-// grains without room stay parked and out of every measure.
+// the way a cook drops rice in by the handful, in rounds `round_s` apart for `seconds`. Each
+// grain keeps the random orientation it was made with (uniform on SO(3)). A round drops grains,
+// lowest first, at the release points no grain is near: the points of a lattice inside the
+// mould (mould_fill.hpp) whose cubes are 1.1 grain lengths L across, the lattice shifted by a
+// random fraction of a cube in x and y each round and each point moved by a random offset of
+// up to L/20 per axis, so that no two grains a round releases can touch (their centres stay L
+// apart) and no two rounds release on the same lattice (with one lattice shifted only by the
+// offsets, the grains stacked in columns, seen from the top of the bunny's pile). The grains
+// leave moving down at 1 m/s, as from a hand 5 cm above, fall, tumble and settle; with rounds a
+// few hundredths of a second apart the fill is a steady rain that frees the top points again as
+// fast as the grains fall (released at rest, the bunny's mould took 1981 grains in 3.5 s; at
+// 1 m/s, 2502). (An earlier fill built the grains along the axes at the points of a lattice of
+// their boxes: it packed denser per round, but the moulded shapes showed the lattice, which no
+// cook's fill does.) Rounds stop when the mould is removed; grains without room stay parked and
+// out of every measure.
 #pragma once
 
 #include "experiments/scene/emitter.hpp"
@@ -37,7 +40,7 @@ class FillEmitter : public Emitter {
 
   int mould_;  ///< index among the scene's mesh colliders
   double round_seconds_, seconds_;  ///< between rounds, and until the last
-  grains::RandomStream random_;  ///< the release points' offsets
+  grains::RandomStream random_;  ///< the lattice's shifts and the release points' offsets
   double clearance_ = 0.0;       ///< L: no grain centre nearer a release point [m]
   std::vector<xpbd::Vec3> lattice_;
   double next_round_ = 0.0;

@@ -9,10 +9,12 @@ namespace rice::experiments {
 
 using xpbd::Vec3;
 
-std::vector<Vec3> mould_lattice(const xpbd::Collider& mould, const Vec3& cell) {
+std::vector<Vec3> mould_lattice(const xpbd::Collider& mould, const Vec3& cell, const Vec3& shift) {
   if (mould.shape != xpbd::ColliderShape::kDistanceGrid || !mould.grid)
     throw std::invalid_argument("fill: the mould must be a mesh collider");
   if (!(cell.minCoeff() > 0.0) || !cell.allFinite()) throw std::invalid_argument("fill: the cell must be positive");
+  if (!(shift.minCoeff() >= 0.0 && shift.maxCoeff() < 1.0))
+    throw std::invalid_argument("fill: the lattice's shift must lie in [0, 1) cells");
   const xpbd::ColliderKeyframe pose = xpbd::collider_pose(mould, 0.0);
   const auto room = [&](const Vec3& world) {
     return xpbd::posed_signed_distance(mould, pose, xpbd::to_local(pose, world)).distance;
@@ -27,14 +29,15 @@ std::vector<Vec3> mould_lattice(const xpbd::Collider& mould, const Vec3& cell) {
     lower = lower.cwiseMin(world);
     upper = upper.cwiseMax(world);
   }
-  const Eigen::Vector3i cells = ((upper - lower).cwiseQuotient(cell)).array().floor().cast<int>();
+  // A shift takes no box further past the grid's box than the odd layers' half cell does.
+  const Eigen::Vector3i cells = ((upper - lower).cwiseQuotient(cell) - shift).array().floor().cast<int>();
   std::vector<Vec3> inside;
   for (int k = 0; k < cells.z(); ++k)
     for (int j = 0; j < cells.y(); ++j)
       for (int i = 0; i < cells.x(); ++i) {
         // Odd layers shifted by half a cell in x and y: each grain lands across four below.
-        const double shift = (k % 2) ? 0.5 : 0.0;
-        const Vec3 centre = lower + (Vec3(i + shift, j + shift, k) + Vec3::Constant(0.5)).cwiseProduct(cell);
+        const double brick = (k % 2) ? 0.5 : 0.0;
+        const Vec3 centre = lower + (Vec3(i + brick, j + brick, k) + shift + Vec3::Constant(0.5)).cwiseProduct(cell);
         bool fits = room(centre) > 0.5 * cell.minCoeff();
         for (int corner = 0; fits && corner < 8; ++corner)
           fits = room(centre + 0.5 * Vec3((corner & 1) ? 1 : -1, (corner & 2) ? 1 : -1, (corner & 4) ? 1 : -1)

@@ -11,11 +11,13 @@
 namespace rice::experiments {
 
 /// Centres of boxes of size `cell` (x, y, z in the world) on a lattice over the collider's
-/// distance grid at its pose at time 0, odd layers shifted by half a cell in x and y: the
-/// points whose box corners and centre all lie in the room (φ > 0, the centre at least half
-/// the smallest side in), layer by layer from the bottom. Throws std::invalid_argument for a
-/// collider without a grid or a cell that is not positive.
-std::vector<xpbd::Vec3> mould_lattice(const xpbd::Collider& mould, const xpbd::Vec3& cell);
+/// distance grid at its pose at time 0, odd layers shifted by half a cell in x and y and every
+/// box by `shift` cells (each in [0, 1)): the points whose box corners and centre all lie in the
+/// room (φ > 0, the centre at least half the smallest side in), layer by layer from the bottom.
+/// Throws std::invalid_argument for a collider without a grid, a cell that is not positive or a
+/// shift outside [0, 1).
+std::vector<xpbd::Vec3> mould_lattice(const xpbd::Collider& mould, const xpbd::Vec3& cell,
+                                      const xpbd::Vec3& shift = xpbd::Vec3::Zero());
 
 /// The lattice points farther than `clearance` from every centre in `occupied`, in order.
 std::vector<xpbd::Vec3> free_points(const std::vector<xpbd::Vec3>& lattice, const std::vector<xpbd::Vec3>& occupied,

@@ -1,10 +1,11 @@
 // The emitters (experiments/scene/emitter.hpp): the spout's layers leave evenly over its time
 // from inside its opening, and it refuses layers that would leave inside each other; the
 // clump's leave at once, stacked a little over a grain length apart; the fill drops randomly
-// turned grains at jittered free points of the mould's lattice round by round, for its time.
+// turned grains at free points of the mould's lattice, shifted each round, for its time.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <filesystem>
 
 #include "experiments/scene/clump_emitter.hpp"
@@ -89,7 +90,7 @@ TEST(ClumpEmitter, EveryLayerLeavesAtOnceStackedAboveTheOneBelow) {
   EXPECT_EQ(info.front(), (std::pair<std::string, std::string>{"emitter", "clump"}));
 }
 
-TEST(FillEmitter, DropsRandomlyTurnedGrainsAtJitteredFreePointsRoundByRoundForItsTime) {
+TEST(FillEmitter, DropsRandomlyTurnedGrainsAtFreePointsOfAnotherLatticeEachRoundForItsTime) {
   // 1200 grains of one variant and the shari mould, whose lattice holds a few hundred.
   const Scene scene = read_scene_file(std::filesystem::path(RICE_SCENES_DIR) / "shari.toml",
                                       {"grains.count=1200", "grains.variants=1", "grains.body=\"rigid\""});
@@ -109,28 +110,43 @@ TEST(FillEmitter, DropsRandomlyTurnedGrainsAtJitteredFreePointsRoundByRoundForIt
     for (int g = 0; g < world.released; ++g) world.model.rigid_bodies[world.model.bodies[g].rigid_body].x.z() += 1.0;
   };
   fill.emit(world, 0.0);
-  EXPECT_EQ(world.released, lattice);
-  // Released in the mould's room, off the lattice by at most L/20 per axis, and L apart.
-  const double L = world.grain_length;
-  int off_lattice = 0;
-  for (int g = 0; g < lattice; ++g) {
+  // A round fills its lattice, shifted from the one the grains were parked on: about as many
+  // points (16 in the shari's mould).
+  const int first = world.released;
+  EXPECT_GE(first, 0.5 * lattice);
+  EXPECT_LE(first, 1.5 * lattice);
+  // Released in the mould's room, L apart, each off its round's lattice by at most L/20 per
+  // axis: in x and y its phase φ = 4π x / cell (the same for the two layers, a half cell apart)
+  // lies within 4π/22 of the lattice's, so within twice that of the round's mean phase.
+  const double L = world.grain_length, cell = 1.1 * L;
+  const auto phase = [&](int begin, int end, int axis) {
+    std::complex<double> sum = 0.0;
+    for (int g = begin; g < end; ++g) sum += std::polar(1.0, 4.0 * M_PI * world.centre(g)[axis] / cell);
+    return sum / std::abs(sum);
+  };
+  const std::complex<double> x_phase = phase(0, first, 0), y_phase = phase(0, first, 1);
+  for (int g = 0; g < first; ++g) {
     const xpbd::Vec3 c = world.centre(g);
     EXPECT_GT(xpbd::local_signed_distance(mould, c).distance, 0.4 * L) << g;
-    const xpbd::Vec3 shift = c - world.initial_centre[g];  // moved from its lattice point by
-    EXPECT_LE(shift.cwiseAbs().maxCoeff(), 0.05 * L + 1e-12) << g;
-    off_lattice += shift.norm() > 1e-3 * L;
+    EXPECT_LE(std::abs(std::arg(phase(g, g + 1, 0) / x_phase)), 8.0 * M_PI / 22.0 + 1e-9) << g;
+    EXPECT_LE(std::abs(std::arg(phase(g, g + 1, 1) / y_phase)), 8.0 * M_PI / 22.0 + 1e-9) << g;
     EXPECT_LT(world.model.rigid_bodies[world.model.bodies[g].rigid_body].v.z(), -0.9) << g;  // dropped from a hand
     for (int h = 0; h < g; ++h) EXPECT_GE((world.centre(h) - c).norm(), L - 1e-12) << g << " " << h;
   }
-  EXPECT_EQ(off_lattice, lattice);
   lift_all();
   fill.emit(world, 0.5 * scene.emitter.round_seconds);  // not yet the next round
-  EXPECT_EQ(world.released, lattice);
+  EXPECT_EQ(world.released, first);
   fill.emit(world, scene.emitter.round_seconds);
-  EXPECT_EQ(world.released, 2 * lattice);
+  const int second = world.released - first;
+  EXPECT_GE(second, 0.5 * lattice);
+  // The second round's lattice is another: with one for every round, grains dropped at its
+  // points stacked in columns.
+  EXPECT_GT(std::abs(std::arg(phase(first, first + second, 0) / x_phase)) +
+                std::abs(std::arg(phase(first, first + second, 1) / y_phase)),
+            0.5);
   lift_all();
   fill.emit(world, scene.emitter.seconds);  // the fill's time is over: no more rounds
-  EXPECT_EQ(world.released, 2 * lattice);
+  EXPECT_EQ(world.released, first + second);
   EXPECT_LT(scene.emitter.seconds, mould.removal_time);
   RunInfoEntries info;
   fill.report(world, info);

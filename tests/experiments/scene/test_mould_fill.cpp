@@ -1,7 +1,7 @@
 // Filling a mould (experiments/scene/mould_fill.hpp) and mesh colliders (collider_grid.hpp):
 // a hollow cube's room is its inside, every lattice box lies in it, the lattice runs from the
-// bottom up and fills the cube but for a cell's margin; free points keep their distance from
-// the grains already in.
+// bottom up and fills the cube but for a cell's margin, a shifted lattice is the same moved;
+// free points keep their distance from the grains already in.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -63,6 +63,30 @@ TEST(MouldFill, AHollowCubeHoldsItsLatticeOfBoxesFromTheBottomUp) {
     EXPECT_GT((c - Vec3(0.0, 0.0, 0.05)).cwiseAbs().maxCoeff(), 0.5 * side);
   EXPECT_THROW(mould_lattice(xpbd::Collider{}, cell), std::invalid_argument);
   EXPECT_THROW(mould_lattice(mould, Vec3(0.0, 1.0, 1.0)), std::invalid_argument);
+  EXPECT_THROW(mould_lattice(mould, cell, Vec3(0.0, 1.0, 0.0)), std::invalid_argument);
+  EXPECT_THROW(mould_lattice(mould, cell, Vec3(-0.1, 0.0, 0.0)), std::invalid_argument);
+}
+
+TEST(MouldFill, AShiftedLatticeIsTheLatticeMovedByItsShiftWhereItsBoxesStayInTheRoom) {
+  const double side = 0.1;
+  const xpbd::Collider mould = mould_of(cube(side), /*hollow=*/true);
+  const Vec3 cell(0.008, 0.004, 0.003), shift(0.3, 0.7, 0.0);
+  const std::vector<Vec3> lattice = mould_lattice(mould, cell), shifted = mould_lattice(mould, cell, shift);
+  ASSERT_FALSE(shifted.empty());
+  // Each shifted point is a point of the lattice moved by the shift, and its box is in the cube.
+  int matched = 0;
+  for (const Vec3& c : shifted) {
+    const Vec3 unshifted = c - shift.cwiseProduct(cell);
+    const auto same = [&](const Vec3& p) { return (p - unshifted).norm() < 1e-9; };
+    matched += std::any_of(lattice.begin(), lattice.end(), same);
+    for (int axis = 0; axis < 3; ++axis)
+      EXPECT_LE(std::abs(c[axis] - (axis == 2 ? 0.05 : 0.0)) + 0.5 * cell[axis], 0.5 * side + 1e-3);
+  }
+  // All but those whose unshifted box crossed a wall that the shift took it from: a layer of
+  // boxes at the x wall and one at the y wall at most.
+  const double wall_layers = side / cell.y() * side / cell.z() + side / cell.x() * side / cell.z();
+  EXPECT_GE(matched, static_cast<double>(shifted.size()) - wall_layers);
+  EXPECT_NEAR(static_cast<double>(shifted.size()), static_cast<double>(lattice.size()), 0.1 * lattice.size());
 }
 
 TEST(MouldFill, FreePointsKeepTheirClearanceFromTheGrainsIn) {
