@@ -1,6 +1,7 @@
 // pile.png of a pour; see pile_plot.hpp.
 #include "experiments/pile/pile_plot.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -9,6 +10,18 @@
 #include "experiments/io/csv_table.hpp"
 
 namespace rice::experiments {
+namespace {
+
+/// The side view's gnuplot size and title: to scale, unless the grains lie in a layer under a
+/// quarter as high as it is wide (a pot's), whose scale left its height a line of ticks.
+std::string side_view_size(const std::vector<xpbd::Vec3>& centres) {
+  xpbd::Vec3 lower = xpbd::Vec3::Constant(INFINITY), upper = -lower;
+  for (const xpbd::Vec3& c : centres) lower = lower.cwiseMin(c), upper = upper.cwiseMax(c);
+  const bool layer = !centres.empty() && upper.z() - lower.z() < 0.25 * (upper.x() - lower.x());
+  return layer ? "set size noratio\nset title 'From the side (height stretched)'" : "set title 'From the side'";
+}
+
+}  // namespace
 
 std::optional<HeapProfile> write_pile_plot(const std::filesystem::path& folder, const std::vector<xpbd::Vec3>& centres,
                                            const PilePlotSettings& settings) {
@@ -52,7 +65,7 @@ unset multiplot
 plot 'final_centres.csv' using 2:3 with points pt 7 ps 0.5 notitle
 set xlabel 'x [m]'
 set ylabel 'z [m]'
-set title 'From the side'
+)" + side_view_size(centres) + R"(
 plot 'final_centres.csv' using 2:4 with points pt 7 ps 0.5 notitle
 unset multiplot
 )");

@@ -6,9 +6,12 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <optional>
 #include <random>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "experiments/io/atomic_file.hpp"
@@ -74,6 +77,20 @@ TEST(AngleOfRepose, IsFittedOnAPlateAndNotInAMouldWhoseWallsShapeThePile) {
     EXPECT_EQ(std::filesystem::exists(folder / "heap_profile.csv"), plate);
     EXPECT_TRUE(std::filesystem::exists(folder / "pile.gp"));
   }
+  // A pot's layer, 1 cm high and 20 cm across, is drawn from the side with its height
+  // stretched; to scale it was a line of ticks. The bunny-high cone stays to scale.
+  std::vector<Vec3> layer;
+  for (int k = 0; k < 400; ++k) layer.emplace_back(-0.1 + 5e-4 * k, 0.0, 0.001 + 2.5e-5 * k);
+  const auto side_view = [&](const std::vector<Vec3>& centres) {
+    const auto folder = std::filesystem::path(RICE_TEST_SCRATCH) / "pile-side";
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    write_pile_plot(folder, centres, {.holder = PileHolder::kMould});
+    std::ifstream in(folder / "pile.gp");
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_NE(side_view(layer).find("set size noratio\nset title 'From the side (height stretched)'"), std::string::npos);
+  EXPECT_EQ(side_view(centres).find("height stretched"), std::string::npos);
 }
 
 TEST(AngleOfRepose, CohesionRaisesTheAngleOfAPouredHeap) {
