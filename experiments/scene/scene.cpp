@@ -1,6 +1,7 @@
 // A scene's own checks; see scene.hpp.
 #include "experiments/scene/scene.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "experiments/io/csv_table.hpp"
@@ -84,6 +85,12 @@ int substeps_per_frame(const Scene& scene) {
   if (scene.solver.substeps > 0) return scene.solver.substeps;
   if (scene.grains.body == xpbd::BodyKind::kRigid) return 80;
   return scene.grains.elasticity == xpbd::TetMaterial::kCorotated ? 160 : 480;
+}
+
+bool any_collider(const Scene& scene, const std::function<bool(const xpbd::Collider&)>& property) {
+  return std::any_of(scene.colliders.begin(), scene.colliders.end(), property) ||
+         std::any_of(scene.mesh_colliders.begin(), scene.mesh_colliders.end(),
+                     [&](const MeshCollider& m) { return property(m.collider); });
 }
 
 }  // namespace rice::experiments

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -179,5 +180,8 @@ void validate(const Scene& scene);
 
 /// scene.solver.substeps, or its default for the body kind when 0.
 int substeps_per_frame(const Scene& scene);
+
+/// Whether any of the scene's colliders beside the container, analytic or mesh, has `property`.
+bool any_collider(const Scene& scene, const std::function<bool(const xpbd::Collider&)>& property);
 
 }  // namespace rice::experiments

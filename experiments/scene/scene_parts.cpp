@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "experiments/scene/carried_observer.hpp"
 #include "experiments/scene/clump_emitter.hpp"
 #include "experiments/scene/fill_emitter.hpp"
 #include "experiments/scene/frames_observer.hpp"
@@ -63,6 +64,7 @@ std::vector<std::unique_ptr<Observer>> make_observers(const Scene& scene, const 
   if (const std::optional<double> drop = drop_time(scene)) observers.push_back(std::make_unique<ImpactObserver>(*drop));
   observers.push_back(std::make_unique<SectionObserver>(folder, scene));
   if (any_collider_yields(scene)) observers.push_back(std::make_unique<YieldObserver>(folder));
+  if (any_collider(scene, moves)) observers.push_back(std::make_unique<CarriedObserver>());
   return observers;
 }
 

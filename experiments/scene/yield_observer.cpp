@@ -1,17 +1,12 @@
 // yield.csv; see yield_observer.hpp.
 #include "experiments/scene/yield_observer.hpp"
 
-#include <algorithm>
-
 #include "experiments/io/atomic_file.hpp"
 
 namespace rice::experiments {
 
 bool any_collider_yields(const Scene& scene) {
-  const auto yielding = [](const xpbd::Collider& c) { return xpbd::yields(c); };
-  return std::any_of(scene.colliders.begin(), scene.colliders.end(), yielding) ||
-         std::any_of(scene.mesh_colliders.begin(), scene.mesh_colliders.end(),
-                     [&](const MeshCollider& m) { return yielding(m.collider); });
+  return any_collider(scene, [](const xpbd::Collider& c) { return xpbd::yields(c); });
 }
 
 YieldObserver::YieldObserver(const std::filesystem::path& folder)

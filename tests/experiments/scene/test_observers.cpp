@@ -10,6 +10,7 @@
 #include <iterator>
 
 #include "experiments/io/numeric_csv.hpp"
+#include "experiments/scene/carried_observer.hpp"
 #include "experiments/scene/clump_emitter.hpp"
 #include "experiments/scene/impact_observer.hpp"
 #include "experiments/scene/render_mesh_observer.hpp"
@@ -51,18 +52,58 @@ Scene clump_on_a_plate(int grains, int frames) {
   return scene;
 }
 
-int render_mesh_observers(const Scene& scene) {
+template <class Kind>
+int observers_of_kind(const Scene& scene) {
   int n = 0;
   for (const auto& observer : make_observers(scene, fs::path(RICE_TEST_SCRATCH) / "unused"))
-    n += dynamic_cast<const RenderMeshObserver*>(observer.get()) != nullptr;
+    n += dynamic_cast<const Kind*>(observer.get()) != nullptr;
   return n;
+}
+
+/// A box 10 x 10 cm and 1 cm thick, lifted from z = 0 at 0 s to z = 0.1 m at 1 s.
+xpbd::Collider lifted_board() {
+  xpbd::Collider board;
+  board.shape = xpbd::ColliderShape::kBox;
+  board.half_extents = xpbd::Vec3(0.05, 0.05, 0.005);
+  board.motion = {{0.0, xpbd::Vec3::Zero(), xpbd::Quat::Identity()},
+                  {1.0, xpbd::Vec3(0, 0, 0.1), xpbd::Quat::Identity()}};
+  return board;
 }
 
 TEST(Observers, OnlyTheEffectsASceneCallsForAreObserved) {
   Scene scene;
-  EXPECT_EQ(render_mesh_observers(scene), 0);
+  EXPECT_EQ(observers_of_kind<RenderMeshObserver>(scene), 0);
   scene.effects.render_meshes = true;
-  EXPECT_EQ(render_mesh_observers(scene), 1);
+  EXPECT_EQ(observers_of_kind<RenderMeshObserver>(scene), 1);
+  xpbd::Collider board = lifted_board();
+  board.motion.pop_back();  // one keyframe: it stands still and carries nothing
+  scene.colliders.push_back(board);
+  scene.collider_materials.push_back("wood");
+  EXPECT_EQ(observers_of_kind<CarriedObserver>(scene), 0);
+  scene.colliders.push_back(lifted_board());
+  scene.collider_materials.push_back("wood");
+  EXPECT_EQ(observers_of_kind<CarriedObserver>(scene), 1);
+}
+
+TEST(CarriedObserver, CountsTheGrainsOverAnUpFacingFaceOfAMovingColliderOnce) {
+  // At 1 s the board's top face is at z = 0.105 m; the reach is 1 cm.
+  const std::vector<xpbd::Vec3> centres = {
+      {0.0, 0.0, 0.107},   // on it
+      {0.04, 0.04, 0.112},  // on it, a layer up
+      {0.0, 0.0, 0.093},   // under it: its face there looks down
+      {0.2, 0.0, 0.107},   // beside it, out of reach
+      {0.0, 0.0, 0.125},   // over it, out of reach
+      {0.0, 0.0, 0.007}};  // on the floor it left
+  std::vector<xpbd::Collider> colliders = {lifted_board()};
+  EXPECT_EQ(carried_grains(colliders, centres, 1.0, 0.01), 2);
+  EXPECT_EQ(carried_grains(colliders, centres, 0.0, 0.01), 1);  // at the start it lay on the floor
+  colliders.push_back(lifted_board());  // two boards in one place: each grain counted once
+  EXPECT_EQ(carried_grains(colliders, centres, 1.0, 0.01), 2);
+  for (xpbd::Collider& board : colliders) board.removal_time = 0.5;  // gone: carries nothing
+  EXPECT_EQ(carried_grains(colliders, centres, 1.0, 0.01), 0);
+  colliders = {lifted_board()};
+  colliders.front().motion.pop_back();  // standing still, a grain on it is not carried
+  EXPECT_EQ(carried_grains(colliders, centres, 1.0, 0.01), 0);
 }
 
 TEST(Observers, AMouldsRoomCountsItsGrainsInItsLastPoseBeforeItGoes) {
