@@ -128,6 +128,11 @@ double sphere_radius(const Model& model, const Body& body, int s) {
   const auto& x = model.particles.x;
   const auto corner = [&](int k) -> Vec3 { return x.row(tet.particles[k]).transpose(); };
   const Mat3 F = edge_matrix(corner(0), corner(1), corner(2), corner(3)) * tet.Dm_inv;
+  // Turned inside out (det F ≤ 0), the signed smallest stretch is ≤ 0: the sphere shrinks to its
+  // centre. Its contacts, with the centre placed through a tangled tet, held a grain's folded tets
+  // against its neighbours (one jittered folded for the last 25 frames of the rice cooker's
+  // tenth, where alone it unfolded within 5 frames).
+  if (F.determinant() <= 0.0) return 0.0;
   const Mat3 C = F.transpose() * F;
   // Stretched every way (σ_min > 1: FᵀF − I positive definite, Sylvester's leading minors),
   // the sphere keeps its rest radius. This test costs a tenth of the eigenvalues below, whose

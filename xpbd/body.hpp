@@ -116,7 +116,8 @@ Vec3 sphere_centre(const Model& model, const Body& body, int s);
 /// Rigid: radii[s]. Soft: radii[s] times the smallest principal stretch σ_min of the tet
 /// holding the centre, capped at 1, so a grain pressed thinner has thinner spheres; with
 /// radii that kept their size, a stack of grains could not be compressed below the sum of
-/// its sphere diameters without overlapping.
+/// its sphere diameters without overlapping. In a tet turned inside out σ_min, signed, is ≤ 0:
+/// the radius is 0.
 double sphere_radius(const Model& model, const Body& body, int s);
 /// Where the material point now at `point` was at the start of the substep.
 Vec3 previous_point(const Model& model, const Body& body, int s, const Vec3& point,

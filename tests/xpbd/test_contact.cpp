@@ -727,7 +727,7 @@ TEST(SphereAnchor, AnImpulseMovesTheCentreByItsInverseMassAndTheDisplacementIsTh
   }
 }
 
-TEST(SphereRadius, ASoftGrainsSpheresThinWithItsSmallestStretchOnly) {
+TEST(SphereRadius, ASoftGrainsSpheresThinWithItsSmallestStretchOnlyAndVanishInsideOut) {
   // x ↦ R diag(1, 1, k) x: every tet's F has singular values (1, 1, k), so each sphere's
   // radius is min(1, k) of its rest radius, whatever the rotation R (to 1e-8 relative: the
   // closed-form eigenvalues of FᵀF lose digits where two are equal).
@@ -749,6 +749,10 @@ TEST(SphereRadius, ASoftGrainsSpheresThinWithItsSmallestStretchOnly) {
   model.particles.x = rest * (turn * Eigen::Vector3d(1.3, 1.2, 0.9).asDiagonal()).transpose();
   for (int s = 0; s < body.sphere_count(); ++s)
     EXPECT_NEAR(sphere_radius(model, body, s), 0.9 * body.radii[s], 1e-8 * body.radii[s]);
+  // Mirrored (1, 1, −1): every tet inside out, so its signed smallest stretch is −1 and each
+  // sphere shrinks to its centre, though FᵀF is that of the rest shape.
+  model.particles.x = rest * (turn * Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal()).transpose();
+  for (int s = 0; s < body.sphere_count(); ++s) EXPECT_EQ(sphere_radius(model, body, s), 0.0);
 }
 
 /// One soft grain dropped onto the ground under a sudden load of 300 times its weight (g =
