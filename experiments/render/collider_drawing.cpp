@@ -9,6 +9,7 @@
 #include "experiments/io/atomic_file.hpp"
 #include "experiments/io/csv_table.hpp"
 #include "experiments/io/numeric_csv.hpp"
+#include "experiments/render/crease_split.hpp"
 #include "grains/mesh_io.hpp"
 
 namespace rice::experiments {
@@ -195,7 +196,7 @@ std::vector<ColliderDrawing> read_collider_drawings(const std::filesystem::path&
                                std::to_string(material));
     if (k == static_cast<int>(drawings.size()) + 1) {
       ColliderDrawing& d = drawings.emplace_back();
-      d.mesh = grains::read_surface_mesh(run / "colliders" / ("collider_" + std::to_string(k) + ".obj"));
+      d.mesh = split_creases(grains::read_surface_mesh(run / "colliders" / ("collider_" + std::to_string(k) + ".obj")));
       d.material = collider_material_names()[material];
       d.hollow = value("hollow") != 0.0;
       d.motion.motion.clear();
