@@ -83,13 +83,13 @@ def write_blade(path, outline, edge, middle, rings=6):
 def write_lathe(path, profile, segments=64):
     """A closed solid of revolution about the z axis: `profile`, points (r, z) that start and end
     on the axis (r = 0), turned through a full circle; faces outward when the profile runs
-    clockwise in the (r, z) plane, seen with r to the right and z up."""
+    counter-clockwise in the (r, z) plane, seen with r to the right and z up."""
     inner = profile[1:-1]  # the points off the axis, each a ring
     n = len(inner)
     lines = ["# " + path.name + ": written by make_moulds.py"]
     for r, z in inner:
-        lines += ["v %.6f %.6f %.6f" % (r * math.cos(2 * math.pi * k / segments), r * math.sin(2 * math.pi * k / segments), z)
-                  for k in range(segments)]
+        angles = [2 * math.pi * k / segments for k in range(segments)]
+        lines += ["v %.6f %.6f %.6f" % (r * math.cos(a), r * math.sin(a), z) for a in angles]
     lines += ["v 0 0 %.6f" % profile[0][1], "v 0 0 %.6f" % profile[-1][1]]
     first, last = n * segments + 1, n * segments + 2
     ring = lambda i, k: i * segments + k % segments + 1
@@ -135,7 +135,8 @@ def circle(radius, segments=64):
 # closed at its rim, that the fill drops grains into, and the pot itself, open at the top: a wall
 # 3 mm thick and a floor 3 mm thick under z = 0.
 write_prism(here / "rice_cooker_pot.obj", circle(0.1), 0.12)
-write_lathe(here / "rice_cooker_pot_walls.obj", [(0, -0.003), (0.103, -0.003), (0.103, 0.12), (0.1, 0.12), (0.1, 0), (0, 0)])
+write_lathe(here / "rice_cooker_pot_walls.obj",
+            [(0, -0.003), (0.103, -0.003), (0.103, 0.12), (0.1, 0.12), (0.1, 0), (0, 0)])
 # The same pot with its wall carried up to 1.5 m, a chute that holds a clump of 34,000 grains
 # stacked on the clump's lattice before it drops (scenes/cases/cooker_drop.toml).
 write_prism(here / "rice_cooker_chute.obj", circle(0.1), 1.5)
