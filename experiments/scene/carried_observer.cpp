@@ -1,32 +1,26 @@
 // The grains a moving collider carries; see carried_observer.hpp.
 #include "experiments/scene/carried_observer.hpp"
 
+#include <algorithm>
+
 #include "experiments/io/csv_table.hpp"
 
 namespace rice::experiments {
 
 bool moves(const xpbd::Collider& collider) { return collider.motion.size() > 1; }
 
-namespace {
-
-bool carries(const xpbd::Collider& collider, const xpbd::Vec3& centre, double time, double reach) {
-  if (!moves(collider) || !xpbd::collider_present(collider, time)) return false;
-  const xpbd::ColliderKeyframe pose = xpbd::collider_pose(collider, time);
-  const xpbd::SignedDistance d = xpbd::posed_signed_distance(collider, pose, xpbd::to_local(pose, centre));
-  return d.distance < reach && (pose.rotation * d.normal).z() > 0.5;
-}
-
-}  // namespace
-
 int carried_grains(const std::vector<xpbd::Collider>& colliders, const std::vector<xpbd::Vec3>& centres,
                    double time, double reach) {
-  int carried = 0;
-  for (const xpbd::Vec3& centre : centres) {
-    bool on_one = false;
-    for (const xpbd::Collider& collider : colliders) on_one = on_one || carries(collider, centre, time, reach);
-    carried += on_one;
+  std::vector<bool> carried(centres.size(), false);
+  for (const xpbd::Collider& collider : colliders) {
+    if (!moves(collider) || !xpbd::collider_present(collider, time)) continue;
+    const xpbd::ColliderKeyframe pose = xpbd::collider_pose(collider, time);
+    for (size_t g = 0; g < centres.size(); ++g) {
+      const xpbd::SignedDistance d = xpbd::posed_signed_distance(collider, pose, xpbd::to_local(pose, centres[g]));
+      carried[g] = carried[g] || (d.distance < reach && (pose.rotation * d.normal).z() > 0.5);
+    }
   }
-  return carried;
+  return static_cast<int>(std::count(carried.begin(), carried.end(), true));
 }
 
 void CarriedObserver::end(const World& world, const Stepper& stepper, SceneReport& report) {
