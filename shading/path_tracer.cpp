@@ -7,10 +7,12 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 
+#include "shading/adaptive_sampling.hpp"
 #include "shading/fresnel.hpp"
 #include "shading/image_tiles.hpp"
 #include "shading/scattering.hpp"
@@ -24,6 +26,14 @@ using Eigen::Vector3f;
 
 struct PathCounters {
   long long paths = 0, rays = 0, scatterings = 0, walks_cut = 0, walks_lost = 0;
+  PathCounters& operator+=(const PathCounters& o) {
+    paths += o.paths;
+    rays += o.rays;
+    scatterings += o.scatterings;
+    walks_cut += o.walks_cut;
+    walks_lost += o.walks_lost;
+    return *this;
+  }
 };
 
 /// What every path of an image reads.
@@ -504,6 +514,7 @@ void validate(const std::vector<Material>& materials, const std::vector<std::opt
   if (s.width < 1 || s.height < 1 || s.samples_per_pixel < 1 || s.max_depth < 1 || s.max_scatterings < 1)
     throw std::invalid_argument("path_trace: width, height, samples per pixel, depth and scatterings must be at least 1");
   check_instance_materials(scene, materials.size(), "path_trace");
+  validate(s.adaptive, "path_trace");
   for (std::size_t k = 0; k < media.size(); ++k) {
     if (!media[k]) continue;
     const Medium& m = *media[k];
@@ -526,34 +537,38 @@ Image path_trace(const RenderScene& scene, const std::vector<Material>& material
   PathContext context{scene, materials, media, lights, {}, settings};
   for (const Sun& sun : lights.suns) context.suns.push_back(sun.sampler());
   const PixelWindow window = rendered_pixels(settings.width, settings.height, settings.crop, "path_trace");
-  Image image(window.width(), window.height());
   const Camera::Frame frame = camera.frame(static_cast<double>(settings.width) / settings.height);
-  std::atomic<long long> paths = 0, rays = 0, scatterings = 0, walks_cut = 0, walks_lost = 0;
-  for_each_tile(window, progress, cancelled, [&](int x0, int y0, int x1, int y1) {
-    PathCounters counters;
-    for (int y = y0; y < y1; ++y) {
-      for (int x = x0; x < x1; ++x) {
-        const PixelSampler pixel(settings.sampler, settings.seed, x, y, settings.samples_per_pixel);
-        Color sum = Color::Zero();
-        for (int i = 0; i < settings.samples_per_pixel; ++i) {
-          double px = 0.0, py = 0.0, la = 0.0, lb = 0.0;
-          pixel.pair(i, 0, px, py);
-          pixel.pair(i, 1, la, lb);
-          const CameraRay cr = frame.ray((x + px) / settings.width, (y + py) / settings.height, la, lb);
-          PathSampler sampler{pixel, i};
-          sum += trace(context, {cr.origin, cr.direction}, sampler, counters);
-        }
-        image.at(x - window.x0, y - window.y0) = sum / static_cast<float>(settings.samples_per_pixel);
+  PathCounters totals;
+  std::mutex totals_lock;
+  // A tile's sampler: the pixel's paths first, ..., first + count - 1, and its counters.
+  struct TileSampler {
+    const PathContext& context;
+    const Camera::Frame& frame;
+    PathCounters& totals;
+    std::mutex& totals_lock;
+    PathCounters counters{};
+    void operator()(int x, int y, int first, int count, PixelSums& sums) {
+      const PathTraceSettings& s = context.settings;
+      const PixelSampler pixel(s.sampler, s.seed, x, y, s.samples_per_pixel);
+      for (int i = first; i < first + count; ++i) {
+        double px = 0.0, py = 0.0, la = 0.0, lb = 0.0;
+        pixel.pair(i, 0, px, py);
+        pixel.pair(i, 1, la, lb);
+        const CameraRay cr = frame.ray((x + px) / s.width, (y + py) / s.height, la, lb);
+        PathSampler sampler{pixel, i};
+        sums.add(trace(context, {cr.origin, cr.direction}, sampler, counters));
       }
     }
-    paths += counters.paths;
-    rays += counters.rays;
-    scatterings += counters.scatterings;
-    walks_cut += counters.walks_cut;
-    walks_lost += counters.walks_lost;
-  });
+    void finish() {
+      const std::lock_guard lock(totals_lock);
+      totals += counters;
+    }
+  };
+  const Image image = sample_pixels(settings.width, settings.height, window, settings.samples_per_pixel,
+                                    settings.adaptive, progress, cancelled,
+                                    [&] { return TileSampler{context, frame, totals, totals_lock}; });
   if (stats) {
-    *stats = {paths, rays, scatterings, walks_cut, walks_lost,
+    *stats = {totals.paths, totals.rays, totals.scatterings, totals.walks_cut, totals.walks_lost,
               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
   }
   return image;

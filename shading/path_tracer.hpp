@@ -47,6 +47,7 @@
 #include <optional>
 #include <vector>
 
+#include "shading/adaptive_sampling.hpp"
 #include "shading/camera.hpp"
 #include "shading/cdrf.hpp"
 #include "shading/image.hpp"
@@ -78,6 +79,7 @@ struct PathTraceSettings {
   /// table outlives the render.
   const CdrfTable* cdrf = nullptr;
   PixelWindow crop{};  ///< render only these pixels, into an image of the crop's size (empty: all)
+  AdaptiveSampling adaptive{};  ///< off: every pixel takes samples_per_pixel (adaptive_sampling.hpp)
 };
 
 struct PathTraceStats {

@@ -111,18 +111,32 @@ struct Batch {
   std::vector<char> sun_occluded;
 };
 
-// The radiance of samples [first, first + count) of one pixel, summed. Their camera rays go
-// to Embree together as a coherent stream, and so do their shadow rays towards the suns.
-Color shade_batch(const RenderScene& scene, const std::vector<Material>& materials, const Lights& lights,
-                  const std::vector<Sun::Sampler>& suns, const CdrfTable& cdrf, const RenderSettings& settings,
-                  const Camera::Frame& frame, const PixelSampler& sampler, int x, int y, int first, int count,
-                  Batch& batch, Counters& counters) {
+// What every sample of an image reads.
+struct DirectContext {
+  const RenderScene& scene;
+  const std::vector<Material>& materials;
+  const Lights& lights;
+  std::vector<Sun::Sampler> suns;
+  const CdrfTable& cdrf;
+  const RenderSettings& settings;
+  Camera::Frame frame;
+};
+
+// The radiance of samples [first, first + count) of one pixel, added to `sums`. Their camera
+// rays go to Embree together as a coherent stream, and so do their shadow rays towards the suns.
+void shade_batch(const DirectContext& c, const PixelSampler& sampler, int x, int y, int first, int count,
+                 Batch& batch, Counters& counters, PixelSums& sums) {
+  const RenderScene& scene = c.scene;
+  const Lights& lights = c.lights;
+  const std::vector<Sun::Sampler>& suns = c.suns;
+  const CdrfTable& cdrf = c.cdrf;
+  const RenderSettings& settings = c.settings;
   batch.rays.clear();
   for (int i = first; i < first + count; ++i) {
     double px = 0.0, py = 0.0, la = 0.0, lb = 0.0;
     sampler.pair(i, 0, px, py);
     sampler.pair(i, 1, la, lb);
-    const CameraRay cr = frame.ray((x + px) / settings.width, (y + py) / settings.height, la, lb);
+    const CameraRay cr = c.frame.ray((x + px) / settings.width, (y + py) / settings.height, la, lb);
     batch.rays.push_back({cr.origin, cr.direction});
   }
   scene.intersect_coherent(batch.rays, batch.hits);
@@ -134,7 +148,7 @@ Color shade_batch(const RenderScene& scene, const std::vector<Material>& materia
   batch.sun_sample.clear();
   batch.sun_contribution.clear();
   for (int k = 0; k < count; ++k) {
-    batch.samples.push_back(surface_sample(materials, batch.rays[k], batch.hits[k]));
+    batch.samples.push_back(surface_sample(c.materials, batch.rays[k], batch.hits[k]));
     SurfaceSample& s = batch.samples.back();
     if (!s.hit) continue;
     for (std::size_t j = 0; j < suns.size(); ++j) {
@@ -160,18 +174,16 @@ Color shade_batch(const RenderScene& scene, const std::vector<Material>& materia
       if (!batch.sun_occluded[r]) batch.samples[batch.sun_sample[r]].radiance += batch.sun_contribution[r];
   }
 
-  Color sum = Color::Zero();
   for (int k = 0; k < count; ++k) {
     SurfaceSample& s = batch.samples[k];
     if (!s.hit) {
-      sum += lights.environment.radiance(batch.rays[k].direction);
+      sums.add(lights.environment.radiance(batch.rays[k].direction));
       continue;
     }
     shade_remaining_lights(scene, lights, cdrf, settings, sampler, first + k, 2 + static_cast<int>(suns.size()), s,
                            counters);
-    sum += s.radiance;
+    sums.add(s.radiance);
   }
-  return sum;
 }
 
 }  // namespace
@@ -181,33 +193,35 @@ Image render(const RenderScene& scene, const std::vector<Material>& materials, c
              const std::function<void(int, int)>& progress, const std::function<bool()>& cancelled) {
   if (settings.width < 1 || settings.height < 1 || settings.samples_per_pixel < 1)
     throw std::invalid_argument("render: width, height and samples per pixel must be at least 1");
+  validate(settings.adaptive, "render");
   check_instance_materials(scene, materials.size(), "render");
   const auto start = std::chrono::steady_clock::now();
   const PixelWindow window = rendered_pixels(settings.width, settings.height, settings.crop, "render");
-  Image image(window.width(), window.height());
+  DirectContext context{scene, materials, lights, {}, cdrf, settings,
+                        camera.frame(static_cast<double>(settings.width) / settings.height)};
+  for (const Sun& sun : lights.suns) context.suns.push_back(sun.sampler());
   std::atomic<long long> camera_rays = 0, shadow_rays = 0;
-  const Camera::Frame frame = camera.frame(static_cast<double>(settings.width) / settings.height);
-  std::vector<Sun::Sampler> suns;
-  for (const Sun& sun : lights.suns) suns.push_back(sun.sampler());
-  for_each_tile(window, progress, cancelled, [&](int x0, int y0, int x1, int y1) {
-    Counters counters;
-    Batch batch;
-    for (int y = y0; y < y1; ++y) {
-      for (int x = x0; x < x1; ++x) {
-        const PixelSampler sampler(settings.sampler, settings.seed, x, y, settings.samples_per_pixel);
-        Color sum = Color::Zero();
-        constexpr int kBatch = 64;
-        for (int first = 0; first < settings.samples_per_pixel; first += kBatch) {
-          const int count = std::min(kBatch, settings.samples_per_pixel - first);
-          sum += shade_batch(scene, materials, lights, suns, cdrf, settings, frame, sampler, x, y, first, count, batch,
-                             counters);
-        }
-        image.at(x - window.x0, y - window.y0) = sum / static_cast<float>(settings.samples_per_pixel);
-      }
+  // A tile's sampler: a pixel's samples in batches of up to 64, and its ray counts.
+  struct TileSampler {
+    const DirectContext& context;
+    std::atomic<long long>&camera_rays, &shadow_rays;
+    Batch batch{};
+    Counters counters{};
+    void operator()(int x, int y, int first, int count, PixelSums& sums) {
+      const RenderSettings& s = context.settings;
+      const PixelSampler sampler(s.sampler, s.seed, x, y, s.samples_per_pixel);
+      constexpr int kBatch = 64;
+      for (int i = first; i < first + count; i += kBatch)
+        shade_batch(context, sampler, x, y, i, std::min(kBatch, first + count - i), batch, counters, sums);
     }
-    camera_rays += counters.camera;
-    shadow_rays += counters.shadow;
-  });
+    void finish() {
+      camera_rays += counters.camera;
+      shadow_rays += counters.shadow;
+    }
+  };
+  const Image image = sample_pixels(settings.width, settings.height, window, settings.samples_per_pixel,
+                                    settings.adaptive, progress, cancelled,
+                                    [&] { return TileSampler{context, camera_rays, shadow_rays}; });
   if (stats) {
     stats->camera_rays = camera_rays;
     stats->shadow_rays = shadow_rays;

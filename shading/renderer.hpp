@@ -13,6 +13,7 @@
 #include <functional>
 #include <vector>
 
+#include "shading/adaptive_sampling.hpp"
 #include "shading/camera.hpp"
 #include "shading/cdrf.hpp"
 #include "shading/image.hpp"
@@ -32,6 +33,7 @@ struct RenderSettings {
   bool shadows = true;
   bool ambient_occlusion = true;  ///< environment light is blocked by geometry
   PixelWindow crop{};  ///< render only these pixels, into an image of the crop's size (empty: all)
+  AdaptiveSampling adaptive{};  ///< off: every pixel takes samples_per_pixel (adaptive_sampling.hpp)
 };
 
 /// Counters of one render.

@@ -39,11 +39,11 @@ class RenderCommands : public CommandFamily {
     c->add_flag("--video", render_.video, "with --every-frame: also render.mp4 (H.264, by ffmpeg) and contact_sheet.png of 12 frames");
     c->add_flag("--deformed-curvature", deformed_curvature_,
                 "soft grains drawn as their own mesh shaded with its curvature (default: their rest curvature; with "
-                "--soft-instance-tolerance 0, every soft grain)");
-    c->add_option("--soft-instance-tolerance", render_.soft.instance_tolerance,
-                  "[m] a soft grain this close to its best rigid fit is drawn as an instance of its variant (0: every "
-                  "soft grain its own deformed mesh)")
-        ->check(number_in(0, 1))->capture_default_str();
+                "--soft-instance-pixels 0, every soft grain)");
+    c->add_option("--soft-instance-pixels", render_.soft.instance_pixels,
+                  "[pixels] a soft grain within this many pixel footprints (at its distance from the camera) of its "
+                  "best rigid fit is drawn as an instance of its variant (0: every soft grain its own deformed mesh)")
+        ->check(number_in(0, 1e6))->capture_default_str();
     c->add_option("--out", out_, "output folder")->capture_default_str();
     c->add_option("--absorption", render_.absorption_percent, "water absorption W [%]: sigma0 and albedo")
         ->check(number_in(0, 100))->capture_default_str();
@@ -51,6 +51,13 @@ class RenderCommands : public CommandFamily {
     c->add_option("--height", render_.render.height, "pixels")->check(number_in(1, 16384))->capture_default_str();
     c->add_option("--spp", render_.render.samples_per_pixel, "samples per pixel")->check(number_in(1, 1 << 20))
         ->capture_default_str();
+    c->add_option("--adaptive-error", render_.render.adaptive.relative_error,
+                  "adaptive sampling: a pixel stops once its standard error is under this fraction of the image's "
+                  "mean radiance, or at --spp (0: off, every pixel takes --spp)")
+        ->check(number_in(0, 1))->capture_default_str();
+    c->add_option("--min-spp", render_.render.adaptive.min_samples,
+                  "adaptive sampling: the samples every pixel takes first, which measure the image's mean")
+        ->check(number_in(2, 1 << 20))->capture_default_str();
     c->add_option("--sampler", sampler_, "sobol, stratified or independent")
         ->check(CLI::IsMember({"sobol", "stratified", "independent"}))->capture_default_str();
     c->add_option("--seed", render_.render.seed, "random seed")->check(seed_value())->capture_default_str();

@@ -178,6 +178,9 @@ class StudyCommands : public CommandFamily {
     c->add_option("--height", image.height, "pixels")->check(number_in(8, 4096))->capture_default_str();
     c->add_option("--spp", image.samples_per_pixel, "samples per pixel")->check(number_in(1, 65536))
         ->capture_default_str();
+    c->add_option("--eye", image.eye, "camera position x y z [m] (default: framed on the grains)")->expected(3)
+        ->check(number_in(-1e6, 1e6));
+    c->add_option("--look-at", image.look_at, "camera target x y z [m]")->expected(3)->check(number_in(-1e6, 1e6));
   }
 
   void add_soft_curvature(CLI::App* study) {
@@ -196,8 +199,10 @@ class StudyCommands : public CommandFamily {
     SoftInstanceStudySettings& s = soft_instances_;
     add_run_frame_options(c, s.image);
     c->add_option("--out", soft_instances_out_, "output folder")->capture_default_str();
-    c->add_option("--tolerances", s.tolerances, "[m] fit tolerances to sweep (0, every grain its own mesh, always)")
-        ->check(number_in(0, 1))->capture_default_str();
+    c->add_option("--tolerances", s.tolerances,
+                  "[pixels] fit tolerances to sweep, in pixel footprints at the grain (0, every grain its own mesh, "
+                  "always)")
+        ->check(number_in(0, 1e6))->capture_default_str();
     add(c, [this] { experiments::validate(soft_instances_); },
         [this] { soft_instance_study_command(soft_instances_, soft_instances_out_); });
   }
@@ -218,6 +223,11 @@ class StudyCommands : public CommandFamily {
         ->capture_default_str();
     c->add_option("--sobol-spp", s.sobol_spp, "Sobol sample counts, ascending")->check(number_in(1, 1 << 20))
         ->capture_default_str();
+    c->add_option("--adaptive-errors", s.adaptive_errors,
+                  "adaptive sampling's errors, a fraction of the mean radiance, descending (none: no adaptive renders)")
+        ->check(number_in(0, 1))->capture_default_str();
+    c->add_option("--adaptive-spp", adaptive_spp_, "MIN MAX samples a pixel of the adaptive renders")->expected(2)
+        ->check(number_in(2, 1 << 20))->capture_default_str();
     c->add_option("--cost-spp", s.cost_spp, "samples of each model's timed render")->check(number_in(1, 1 << 20))
         ->capture_default_str();
     c->add_option("--integrator", frame_cost_integrator_, "the model under study: cdrf or translucent")
@@ -229,6 +239,8 @@ class StudyCommands : public CommandFamily {
       FrameCostStudySettings f = frame_cost_;
       f.window_width = window_[0];
       f.window_height = window_[1];
+      f.adaptive_min_spp = adaptive_spp_[0];
+      f.adaptive_max_spp = adaptive_spp_[1];
       f.integrator = frame_cost_integrator_ == "cdrf" ? RenderIntegrator::kCdrf : RenderIntegrator::kTranslucent;
       return f;
     };
@@ -519,6 +531,7 @@ class StudyCommands : public CommandFamily {
   std::string soft_instances_out_ = "out/soft-instances";
   FrameCostStudySettings frame_cost_;
   std::vector<int> window_{480, 270};
+  std::vector<int> adaptive_spp_{16, 1024};
   std::string frame_cost_out_ = "out/frame-cost", frame_cost_integrator_ = "translucent";
   PourSubstepStudySettings pour_substeps_;
   std::string pour_substeps_out_ = "out/pour-substeps", pour_substeps_body_ = "rigid";

@@ -137,6 +137,7 @@ shading::Image integrate(const RenderCommandSettings& s, const RenderInputs& in,
                                         .sampler = r.sampler, .seed = r.seed,
                                         .max_depth = reference ? s.max_depth : 1 + s.bounces};
     settings.crop = r.crop;
+    settings.adaptive = r.adaptive;
     if (!reference) settings.cdrf = &in.cdrf;  // the grains' fast model, not their medium
     std::vector<std::optional<shading::Medium>> media;
     if (reference) media.push_back(grain_medium(s.absorption_percent));
@@ -149,17 +150,18 @@ shading::Image integrate(const RenderCommandSettings& s, const RenderInputs& in,
   return image;
 }
 
-/// The grains of image k (a run's frame, or the mesh files) and the bowl in `scene`; the box
-/// that frames them.
+/// Image k's subject: the mesh files in `scene`, or the run's frame read into `grains` (drawn
+/// once the camera is known), and the bowl in `scene`; returns the box that frames them.
 Eigen::AlignedBox3d add_subject(shading::RenderScene& scene, const RenderCommandSettings& s, const RenderInputs& in,
-                                const std::filesystem::path& frame, RenderTotals& totals) {
-  std::vector<Eigen::AlignedBox3d> grain_boxes;
+                                const std::filesystem::path& frame, RunFrame& grains) {
+  std::vector<Eigen::AlignedBox3d> boxes;
   if (!s.run.empty()) {
-    totals.own_meshes = add_run_grains(scene, s.run, *in.variants, frame, grain_boxes, s.soft);
+    grains = read_run_frame(s.run, *in.variants, frame);
+    boxes = grains.boxes;
   } else {
-    add_mesh_files(scene, s, in.files, grain_boxes);
+    add_mesh_files(scene, s, in.files, boxes);
   }
-  return add_bowl(scene, s, framing_box(grain_boxes));
+  return add_bowl(scene, s, framing_box(boxes));
 }
 
 /// A video's stage: it frames the run's last frame and what any frame's colliders show.
@@ -172,8 +174,12 @@ Stage video_stage(const RenderCommandSettings& s, const RenderInputs& in, const 
 void render_image(const RenderCommandSettings& s, const RenderInputs& in, int k, std::optional<Stage>& stage,
                   const std::filesystem::path& folder, RenderTotals& totals) {
   shading::RenderScene scene;
-  const Eigen::AlignedBox3d box = add_subject(scene, s, in, s.run.empty() ? "" : in.frames[k], totals);
+  RunFrame grains;
+  const Eigen::AlignedBox3d box = add_subject(scene, s, in, s.run.empty() ? "" : in.frames[k], grains);
   if (!stage) stage = s.every_frame ? video_stage(s, in, box) : stage_for(s, box);  // image 0: the last frame
+  if (!s.run.empty())
+    totals.own_meshes =
+        add_run_frame(scene, grains, *in.variants, s.soft, pixel_footprint(stage->camera, s.render.height));
   add_set(scene, s, *stage);
   if (!s.run.empty()) add_colliders(scene, in.colliders, frame_number(in.frames[k]) / in.fps, stage->camera.position);
   scene.commit();
@@ -202,6 +208,10 @@ void write_render_info(const RenderCommandSettings& s, const RenderInputs& in, c
                        int images, const RenderTotals& totals, double wall_seconds,
                        const std::filesystem::path& folder) {
   const double rays = static_cast<double>(totals.stats.camera_rays + totals.stats.shadow_rays);
+  const shading::PixelWindow window =
+      shading::rendered_pixels(s.render.width, s.render.height, s.render.crop, "render");
+  const double mean_samples = static_cast<double>(totals.stats.camera_rays) /
+                              (static_cast<double>(window.width()) * window.height() * images);
   const std::string meshes = s.run.empty()    ? cell(static_cast<long>(in.files.size()))
                              : s.every_frame ? "run " + s.run.string() + ", every frame"
                                              : "run " + in.frames.front().string();
@@ -215,7 +225,7 @@ void write_render_info(const RenderCommandSettings& s, const RenderInputs& in, c
                                   {"run_fps", s.run.empty() ? "n/a" : cell(in.fps)},
                                   {"instances", cell(totals.instances)},
                                   {"prototypes", cell(totals.prototypes)},
-                                  {"soft_instance_tolerance_m", cell(s.soft.instance_tolerance)},
+                                  {"soft_instance_pixels", cell(s.soft.instance_pixels)},
                                   {"soft_grains_own_mesh", cell(totals.own_meshes)},
                                   {"integrator", integrator_name(s.integrator)},
                                   {"max_depth", s.integrator == RenderIntegrator::kPath ? cell(s.max_depth) : "n/a"},
@@ -233,6 +243,10 @@ void write_render_info(const RenderCommandSettings& s, const RenderInputs& in, c
                                   {"camera_aperture_m", cell(camera.aperture_radius)},
                                   {"camera_focus_m", cell(camera.focus_distance)},
                                   {"samples_per_pixel", cell(s.render.samples_per_pixel)},
+                                  {"adaptive_error", cell(s.render.adaptive.relative_error)},
+                                  {"adaptive_min_samples",
+                                   s.render.adaptive.on() ? cell(s.render.adaptive.min_samples) : "n/a"},
+                                  {"mean_samples_per_pixel", cell(mean_samples)},
                                   {"sampler", sampler_name(s.render.sampler)},
                                   {"seed", cell(static_cast<long>(s.render.seed))},
                                   {"lighting", s.lighting == Lighting::kStudio ? "studio" : "sun"},
@@ -243,8 +257,8 @@ void write_render_info(const RenderCommandSettings& s, const RenderInputs& in, c
                                   {"render_s", cell(totals.stats.seconds)},
                                   {"rays_per_second", cell(rays / totals.stats.seconds)},
                                   {"wall_s", cell(wall_seconds)}}));
-  std::printf("render: %d image(s) of %d x %d at %d spp in %.1f s (%.2f M rays/s)\n", images, s.render.width,
-              s.render.height, s.render.samples_per_pixel, totals.stats.seconds, 1e-6 * rays / totals.stats.seconds);
+  std::printf("render: %d image(s) of %d x %d at %.4g spp in %.1f s (%.2f M rays/s)\n", images, s.render.width,
+              s.render.height, mean_samples, totals.stats.seconds, 1e-6 * rays / totals.stats.seconds);
 }
 
 }  // namespace
@@ -324,8 +338,9 @@ RenderOutcome render_command(const RenderCommandSettings& settings, const std::f
   std::optional<Stage> stage;
   RenderTotals totals;
   if (settings.every_frame && inputs.frames.front() != inputs.run_frames.back()) {  // a part of the video
-    shading::RenderScene last_frame;
-    stage = video_stage(settings, inputs, add_subject(last_frame, settings, inputs, inputs.run_frames.back(), totals));
+    shading::RenderScene bowl;
+    RunFrame last_frame;
+    stage = video_stage(settings, inputs, add_subject(bowl, settings, inputs, inputs.run_frames.back(), last_frame));
   }
   const int images = settings.run.empty() ? 1 : static_cast<int>(inputs.frames.size());
   Progress progress("render: frames", images);
@@ -340,8 +355,9 @@ RenderOutcome render_command(const RenderCommandSettings& settings, const std::f
     write_contact_sheet(folder, "frame_%04d.png", first, images, 12, std::min(settings.render.width, 320),
                         "contact_sheet.png");
   }
-  write_render_info(settings, inputs, stage->camera, images, totals, seconds_since(start), folder);
-  return {stage->camera, totals.stats};
+  const double wall_seconds = seconds_since(start);
+  write_render_info(settings, inputs, stage->camera, images, totals, wall_seconds, folder);
+  return {stage->camera, totals.stats, wall_seconds, totals.own_meshes};
 }
 
 void validate(const RunFrameImage& image) {
@@ -349,19 +365,25 @@ void validate(const RunFrameImage& image) {
     throw std::invalid_argument("--run: '" + image.run.string() + "' is not a run's folder");
   if (image.width < 1 || image.height < 1 || image.samples_per_pixel < 1)
     throw std::invalid_argument("--width, --height and --spp must be positive");
+  if (image.eye.size() != image.look_at.size() || (image.eye.size() != 0 && image.eye.size() != 3))
+    throw std::invalid_argument("--eye and --look-at: give both, x y z each, or neither");
 }
 
-double timed_run_render(const RunFrameImage& image, const SoftGrainDrawing& soft, const std::filesystem::path& folder) {
+RenderOutcome render_run_frame(const RunFrameImage& image, const SoftGrainDrawing& soft,
+                               const std::filesystem::path& folder) {
   RenderCommandSettings r;
   r.run = image.run;
   r.frame = image.frame;
   r.render.width = image.width;
   r.render.height = image.height;
   r.render.samples_per_pixel = image.samples_per_pixel;
+  if (!image.eye.empty()) {
+    r.camera = shading::Camera{};
+    r.camera->position = {image.eye[0], image.eye[1], image.eye[2]};
+    r.camera->target = {image.look_at[0], image.look_at[1], image.look_at[2]};
+  }
   r.soft = soft;
-  const auto start = std::chrono::steady_clock::now();
-  render_command(r, folder);
-  return seconds_since(start);
+  return render_command(r, folder);
 }
 
 }  // namespace rice::experiments

@@ -86,6 +86,8 @@ std::string sampler_name(shading::SamplerKind kind);
 struct RenderOutcome {
   shading::Camera camera;     ///< the camera it used (the framed one when none was given)
   shading::RenderStats stats;  ///< rays and seconds of the rendering itself, every image's
+  double wall_seconds = 0.0;   ///< of the whole command, reading the run included
+  int own_meshes = 0;          ///< soft grains drawn as their own deformed mesh (the last image's)
 };
 
 /// Renders into `folder`.
@@ -96,13 +98,15 @@ struct RunFrameImage {
   std::filesystem::path run;  ///< a soft scene run's output folder
   int frame = 0;              ///< 0: its last
   int width = 320, height = 240, samples_per_pixel = 16;
+  std::vector<double> eye, look_at;  ///< [m] x y z of the camera and its target; none: framed on the grains
 };
 
-/// Throws std::invalid_argument for a missing run folder or sizes that are not positive.
+/// Throws std::invalid_argument for a missing run folder, sizes that are not positive, or an
+/// eye without a target (or the other way round).
 void validate(const RunFrameImage& image);
 
-/// The image rendered with the run's soft grains drawn as `soft`, into `folder`; returns the
-/// wall time [s].
-double timed_run_render(const RunFrameImage& image, const SoftGrainDrawing& soft, const std::filesystem::path& folder);
+/// The image rendered with the run's soft grains drawn as `soft`, into `folder`.
+RenderOutcome render_run_frame(const RunFrameImage& image, const SoftGrainDrawing& soft,
+                               const std::filesystem::path& folder);
 
 }  // namespace rice::experiments

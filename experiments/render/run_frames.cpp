@@ -2,7 +2,10 @@
 #include "experiments/render/run_frames.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <numbers>
+#include <optional>
 #include <string>
 #include <stdexcept>
 
@@ -114,6 +117,20 @@ Eigen::AlignedBox3d placed_box(const grains::Vertices& V, const Eigen::Affine3d&
   return box;
 }
 
+/// The box of every 16th vertex of a soft grain's render mesh, carried by its simulation
+/// vertices (the coarse tets are inscribed: their vertices' box missed the mesh by 10%).
+Eigen::AlignedBox3d embedded_box(const SoftGrain& grain, const RunVariants& variants) {
+  const grains::Embedding& embedding = variants.embedding[grain.variant];
+  const grains::Tets& T = variants.simulation[grain.variant].T;
+  Eigen::AlignedBox3d box;
+  for (Eigen::Index v = 0; v < embedding.tet.size(); v += 16) {
+    Eigen::Vector3d p = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 4; ++k) p += embedding.weights(v, k) * grain.x.row(T(embedding.tet[v], k)).transpose();
+    box.extend(p);
+  }
+  return box;
+}
+
 /// Each variant's prototype, added the first time a grain needs it.
 class VariantPrototypes {
  public:
@@ -133,17 +150,16 @@ class VariantPrototypes {
   std::vector<int> index_;
 };
 
-/// One row per grain: its render mesh placed by rigid_grain_place.
-void add_rigid_grains(shading::RenderScene& scene, const NumericCsv& grains_csv, const NumericCsv& frame,
-                      const RunVariants& variants, std::vector<Eigen::AlignedBox3d>& boxes) {
+/// One row per grain: its variant placed by rigid_grain_place, and its box.
+void read_rigid_grains(const NumericCsv& grains_csv, const NumericCsv& frame, const RunVariants& variants,
+                       RunFrame& out) {
   check_rigid_frame(grains_csv, frame);
-  VariantPrototypes prototype(scene, variants);
   for (size_t g = 0; g < grains_csv.rows.size(); ++g) {
     const int variant = grain_variant(grains_csv, g, variants);
     if (!in_scene(frame, frame.rows[g])) continue;
-    const Eigen::Affine3d place = rigid_grain_place(grains_csv, frame, g);
-    scene.add_instance(prototype[variant], place, 0, static_cast<int>(g));
-    boxes.push_back(placed_box(variants.meshes[variant].V, place));
+    out.rigid.push_back({.grain = static_cast<int>(g), .variant = variant,
+                         .place = rigid_grain_place(grains_csv, frame, g)});
+    out.boxes.push_back(placed_box(variants.meshes[variant].V, out.rigid.back().place));
   }
 }
 
@@ -166,41 +182,33 @@ grains::Vertices simulation_vertices(const NumericCsv& frame, size_t g, Eigen::I
   return V;
 }
 
-/// Each soft grain as `soft` says: an instance of its variant at its rigid fit when that is
-/// close enough, else its own mesh. Returns how many were their own mesh.
-int add_soft_grains(shading::RenderScene& scene, const NumericCsv& grains_csv, const NumericCsv& frame,
-                    const RunVariants& variants, const SoftGrainDrawing& soft,
-                    std::vector<Eigen::AlignedBox3d>& boxes) {
-  VariantPrototypes prototype(scene, variants);
-  int own = 0;
-  for (const SoftGrain& grain : soft_run_grains(grains_csv, frame, variants)) {
-    if (soft.instance_tolerance > 0.0) {
-      const RigidFit fit = fit_rigid_motion(variants.simulation[grain.variant].V, grain.swell, grain.x);
-      if (fit.residual <= soft.instance_tolerance) {
-        scene.add_instance(prototype[grain.variant], fit.place, 0, grain.grain);
-        boxes.push_back(placed_box(variants.meshes[grain.variant].V, fit.place));
-        continue;
-      }
-    }
-    const grains::SurfaceMesh mesh = deformed_render_mesh(grain, variants);
-    const GrainShading& rest = variants.shading[grain.variant];
-    // The rest normals carried by the tets' deformation (smoothing the deformed mesh anew cost
-    // 90 ms a grain); the rest curvature and thickness scaled by the swell (a grain at rest
-    // deforms by a few per cent), or its own curvature.
-    const grains::VolumeMesh& simulation = variants.simulation[grain.variant];
-    GrainShading drawn{.curvature = rest.curvature / grain.swell,
-                       .thickness = rest.thickness * grain.swell,
-                       .normals = grains::carry_normals(variants.embedding[grain.variant], rest.normals,
-                                                        simulation.V, grain.x, simulation.T)};
-    if (soft.curvature == SoftCurvature::kDeformed)
-      drawn.curvature = shading::smoothed_vertex_values(mesh.V, mesh.F, shading::vertex_mean_curvature(mesh.V, mesh.F),
-                                                        curvature_radius(variants.shading_radius));
-    scene.add_instance(add_grain_prototype(scene, mesh.V, mesh.F, drawn, shading::RenderScene::Reuse::kSingle),
-                       Eigen::Affine3d::Identity(), 0, grain.grain);
-    boxes.push_back(placed_box(mesh.V, Eigen::Affine3d::Identity()));
-    ++own;
-  }
-  return own;
+/// A soft grain as its own render mesh, carried by its simulation vertices.
+void add_own_mesh(shading::RenderScene& scene, const SoftGrain& grain, const RunVariants& variants,
+                  SoftCurvature curvature) {
+  const grains::SurfaceMesh mesh = deformed_render_mesh(grain, variants);
+  const GrainShading& rest = variants.shading[grain.variant];
+  // The rest normals carried by the tets' deformation (smoothing the deformed mesh anew cost
+  // 90 ms a grain); the rest curvature and thickness scaled by the swell (a grain at rest
+  // deforms by a few per cent), or its own curvature.
+  const grains::VolumeMesh& simulation = variants.simulation[grain.variant];
+  GrainShading drawn{.curvature = rest.curvature / grain.swell,
+                     .thickness = rest.thickness * grain.swell,
+                     .normals = grains::carry_normals(variants.embedding[grain.variant], rest.normals, simulation.V,
+                                                      grain.x, simulation.T)};
+  if (curvature == SoftCurvature::kDeformed)
+    drawn.curvature = shading::smoothed_vertex_values(mesh.V, mesh.F, shading::vertex_mean_curvature(mesh.V, mesh.F),
+                                                      curvature_radius(variants.shading_radius));
+  scene.add_instance(add_grain_prototype(scene, mesh.V, mesh.F, drawn, shading::RenderScene::Reuse::kSingle),
+                     Eigen::Affine3d::Identity(), 0, grain.grain);
+}
+
+/// Where grain's variant stands in for it: its best rigid fit, when all its vertices lie
+/// within `tolerance` [m] of it.
+std::optional<Eigen::Affine3d> instance_place(const SoftGrain& grain, const RunVariants& variants, double tolerance) {
+  if (!(tolerance > 0.0)) return std::nullopt;
+  const RigidFit fit = fit_rigid_motion(variants.simulation[grain.variant].V, grain.swell, grain.x);
+  if (fit.residual > tolerance) return std::nullopt;
+  return fit.place;
 }
 
 }  // namespace
@@ -257,15 +265,41 @@ grains::SurfaceMesh deformed_render_mesh(const SoftGrain& grain, const RunVarian
           variants.meshes[grain.variant].F};
 }
 
-int add_run_grains(shading::RenderScene& scene, const std::filesystem::path& run, const RunVariants& variants,
-                   const std::filesystem::path& frame, std::vector<Eigen::AlignedBox3d>& boxes,
-                   const SoftGrainDrawing& soft) {
+PixelFootprint pixel_footprint(const shading::Camera& camera, int height) {
+  const double half_fov = 0.5 * camera.vertical_fov_degrees * std::numbers::pi / 180.0;
+  return {camera.position, 2.0 * std::tan(half_fov) / height};
+}
+
+RunFrame read_run_frame(const std::filesystem::path& run, const RunVariants& variants,
+                        const std::filesystem::path& frame) {
   const NumericCsv grains_csv = read_numeric_csv(run / "grains.csv");
   const NumericCsv poses = read_numeric_csv(frame);
-  if (std::find(poses.columns.begin(), poses.columns.end(), "vertex") != poses.columns.end())
-    return add_soft_grains(scene, grains_csv, poses, variants, soft, boxes);
-  add_rigid_grains(scene, grains_csv, poses, variants, boxes);
-  return 0;
+  RunFrame out;
+  if (std::find(poses.columns.begin(), poses.columns.end(), "vertex") == poses.columns.end()) {
+    read_rigid_grains(grains_csv, poses, variants, out);
+    return out;
+  }
+  out.soft = soft_run_grains(grains_csv, poses, variants);
+  for (const SoftGrain& grain : out.soft) out.boxes.push_back(embedded_box(grain, variants));
+  return out;
+}
+
+int add_run_frame(shading::RenderScene& scene, const RunFrame& frame, const RunVariants& variants,
+                  const SoftGrainDrawing& soft, const PixelFootprint& footprint) {
+  VariantPrototypes prototype(scene, variants);
+  for (const PlacedGrain& grain : frame.rigid)
+    scene.add_instance(prototype[grain.variant], grain.place, 0, grain.grain);
+  int own = 0;
+  for (const SoftGrain& grain : frame.soft) {
+    const double tolerance = soft.instance_pixels * footprint.at(grain.x.colwise().mean().transpose());
+    if (const auto place = instance_place(grain, variants, tolerance)) {
+      scene.add_instance(prototype[grain.variant], *place, 0, grain.grain);
+    } else {
+      add_own_mesh(scene, grain, variants, soft.curvature);
+      ++own;
+    }
+  }
+  return own;
 }
 
 }  // namespace rice::experiments

@@ -3,8 +3,10 @@
 // grains. A rigid grain is an instance of its variant at c + q (drop + P R p − c₀)
 // (grains.csv). A soft grain's frame rows are its simulation vertices, deformed; its render
 // mesh rides on them through its variant's embedding (paper §4.3), each vertex at Σ_k w_k x_k,
-// unless the grain is within SoftGrainDrawing::instance_tolerance of rigid: then it is an
-// instance of its variant at its best rigid fit (rigid_fit.hpp), as a rigid grain is.
+// unless the grain is within SoftGrainDrawing::instance_pixels of a pixel's footprint of rigid:
+// then it is an instance of its variant at its best rigid fit (rigid_fit.hpp), as a rigid
+// grain is. A frame is read (read_run_frame: what frames the camera) before it is drawn
+// (add_run_frame: the footprint comes from that camera).
 #pragma once
 
 #include <Eigen/Geometry>
@@ -16,6 +18,7 @@
 #include "grains/embedding.hpp"
 #include "experiments/io/numeric_csv.hpp"
 #include "grains/mesh_types.hpp"
+#include "shading/camera.hpp"
 #include "shading/render_scene.hpp"
 
 namespace rice::experiments {
@@ -41,13 +44,24 @@ enum class SoftCurvature {
 /// How a soft run's grains are drawn (docs/rendering.md measures both knobs).
 struct SoftGrainDrawing {
   SoftCurvature curvature = SoftCurvature::kRest;  ///< of the grains drawn as their own mesh
-  /// [m] A grain whose simulation vertices all lie this close to its best rigid fit is an
-  /// instance of its variant there; 0: every grain its own deformed mesh. The default is
-  /// under a pixel of a 4K frame of a 10 cm scene (26 µm); on the onigiri's last frame it
-  /// instances 304 of 793 grains and changes the image by 0.47% RMS (`rice study
-  /// soft-instances`, docs/rendering.md).
-  double instance_tolerance = 2e-5;
+  /// A grain whose simulation vertices all lie within this many pixel footprints (at its
+  /// distance from the camera) of its best rigid fit is an instance of its variant there; 0:
+  /// every grain its own deformed mesh. An own mesh costs some 4.7 MB (its hierarchy), so a
+  /// tolerance in metres, blind to the image, drew 889 of the rice cooker tenth's 3404 grains
+  /// as their own at 640 × 480, where a pixel spans 0.5 mm (`rice study soft-instances`,
+  /// docs/rendering.md).
+  double instance_pixels = 0.25;
 };
+
+/// The width [m] a pixel of an image spans at a point: `per_metre` times its distance from `eye`.
+struct PixelFootprint {
+  Eigen::Vector3d eye = Eigen::Vector3d::Zero();
+  double per_metre = 0.0;
+  double at(const Eigen::Vector3d& p) const { return per_metre * (p - eye).norm(); }
+};
+
+/// A pixel's footprint for `camera`'s images `height` pixels high: 2 tan(fov/2) / height a metre.
+PixelFootprint pixel_footprint(const shading::Camera& camera, int height);
 
 /// The run's variants and their shading (curvature, normals, thickness), computed once for
 /// every frame rendered; for a soft run also their simulation meshes and the render meshes'
@@ -90,14 +104,30 @@ Eigen::Affine3d rigid_grain_place(const NumericCsv& grains_csv, const NumericCsv
 /// Its render mesh, carried by its simulation vertices through its variant's embedding.
 grains::SurfaceMesh deformed_render_mesh(const SoftGrain& grain, const RunVariants& variants);
 
-/// Adds the grains in the scene at `frame` (those still parked are left out), with material 0
-/// and their index in grains.csv as label,
-/// and appends each one's box to `boxes`: a rigid run's as instances of the variants, a soft
-/// run's as `soft` says. Returns how many soft grains were drawn as their own mesh. Throws
-/// std::runtime_error naming the file for a frame that does not match grains.csv or the
-/// variants.
-int add_run_grains(shading::RenderScene& scene, const std::filesystem::path& run, const RunVariants& variants,
-                   const std::filesystem::path& frame, std::vector<Eigen::AlignedBox3d>& boxes,
-                   const SoftGrainDrawing& soft = {});
+/// A rigid grain of a frame: its variant placed.
+struct PlacedGrain {
+  int grain = 0, variant = 0;
+  Eigen::Affine3d place = Eigen::Affine3d::Identity();
+};
+
+/// The grains in the scene at a run's frame (those still parked left out), read and not yet
+/// drawn: a rigid run's placed, a soft run's vertices; and each one's box.
+struct RunFrame {
+  std::vector<PlacedGrain> rigid;
+  std::vector<SoftGrain> soft;
+  std::vector<Eigen::AlignedBox3d> boxes;  ///< of every 16th vertex of each one's render mesh
+};
+
+/// Reads `frame` of `run`; throws std::runtime_error naming the file for a frame that does
+/// not match grains.csv or the variants.
+RunFrame read_run_frame(const std::filesystem::path& run, const RunVariants& variants,
+                        const std::filesystem::path& frame);
+
+/// Adds the frame's grains to `scene` with material 0 and their index in grains.csv as label:
+/// a rigid grain as an instance of its variant, a soft one as `soft` says, its tolerance
+/// `soft.instance_pixels` × `footprint` at its centre. Returns how many soft grains were
+/// drawn as their own mesh.
+int add_run_frame(shading::RenderScene& scene, const RunFrame& frame, const RunVariants& variants,
+                  const SoftGrainDrawing& soft, const PixelFootprint& footprint);
 
 }  // namespace rice::experiments

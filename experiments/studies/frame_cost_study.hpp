@@ -7,13 +7,18 @@
 //  - Sobol samples at each of sobol_spp; the equal-error sample count is where Sobol's error
 //    falls to the paper's sampling's (log-log interpolated between the counts around it, or
 //    extrapolated past the last, which run_info.txt says);
+//  - Sobol samples with adaptive sampling (shading/adaptive_sampling.hpp) at each of
+//    adaptive_errors, up to adaptive_max_spp a pixel;
 //  - each model (the CDRF, the translucent model with 0, 1, 2 bounces) at cost_spp;
-// and estimates the whole frame's render time as the window's seconds per sample per pixel ×
-// the frame's pixels × the sample count, at paper_spp and at the equal-error count. The
-// window is the frame's centre, where the grains are: the estimate leans long. Writes
-// frame_cost.csv (role, integrator, bounces, sampler, spp, seconds, relative_rmse,
-// frame_seconds), frame_cost.png (error against estimated frame time), each window's images
-// under window_<role>_<spp>/, and run_info.txt with the equal-error count and the estimates.
+// and estimates the whole frame's render time as the window's seconds × the frame's pixels /
+// the window's, at paper_spp, at the equal-error count and, interpolated the same way in
+// time, at the adaptive renders' equal error. The window defaults to the frame's centre,
+// where the grains are: the estimate leans long, and adaptive sampling gains least there; a
+// window as large as the frame (at a smaller size) measures the whole picture. Writes
+// frame_cost.csv (role, integrator, bounces, sampler, adaptive_error, spp (the mean, for an
+// adaptive render), seconds, relative_rmse, frame_seconds), frame_cost.png (error against
+// estimated frame time), each window's images under window_<role>_<k>/, and run_info.txt
+// with the equal-error count and the estimates.
 #pragma once
 
 #include <filesystem>
@@ -30,6 +35,8 @@ struct FrameCostStudySettings {
   int window_width = 480, window_height = 270;  ///< rendered at the frame's centre
   int reference_spp = 2048, paper_spp = 800, cost_spp = 32;
   std::vector<int> sobol_spp{4, 8, 16, 32, 64, 128, 256, 512};
+  std::vector<double> adaptive_errors{0.2, 0.1, 0.05, 0.03, 0.02};  ///< descending
+  int adaptive_min_spp = 16, adaptive_max_spp = 1024;
   RenderIntegrator integrator = RenderIntegrator::kTranslucent;  ///< the model under study
   int bounces = 1;
 };
@@ -40,10 +47,11 @@ void validate(const FrameCostStudySettings& settings);
 
 void frame_cost_study_command(const FrameCostStudySettings& settings, const std::filesystem::path& folder);
 
-/// The sample count at which a falling error curve (spp ascending) reaches `target`,
-/// interpolated in log(spp) against log(error), or extrapolated along the last segment when
-/// the sweep ends above it; the first count when it starts below, infinity when the curve
-/// does not fall. Throws std::invalid_argument unless there is one error per count.
-double equal_error_spp(const std::vector<int>& spp, const std::vector<double>& error, double target);
+/// The cost (a sample count, or seconds) at which a falling error curve (cost ascending)
+/// reaches `target`, interpolated in log(cost) against log(error), or extrapolated along the
+/// last segment when the sweep ends above it; the first cost when it starts below, infinity
+/// when the curve does not fall. Throws std::invalid_argument unless there is one error per
+/// cost.
+double equal_error_cost(const std::vector<double>& cost, const std::vector<double>& error, double target);
 
 }  // namespace rice::experiments

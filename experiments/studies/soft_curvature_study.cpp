@@ -66,7 +66,7 @@ void soft_curvature_study_command(const SoftCurvatureStudySettings& s, const std
   write_file_atomically(folder / "soft_curvature.csv", table.text());
   // Every grain its own mesh, so that each is shaded as the option says.
   const auto render_with = [&](SoftCurvature curvature, const std::filesystem::path& images) {
-    return timed_run_render(s.image, {.curvature = curvature, .instance_tolerance = 0.0}, images);
+    return render_run_frame(s.image, {.curvature = curvature, .instance_pixels = 0.0}, images).wall_seconds;
   };
   const double rest_s = render_with(SoftCurvature::kRest, folder / "rest");
   const double deformed_s = render_with(SoftCurvature::kDeformed, folder / "deformed");

@@ -74,12 +74,17 @@ if(result EQUAL 0 OR NOT error MATCHES "frame [12] is in two parts")
 endif()
 # The frame-cost study on the short run: a window of a 64 x 36 frame.
 run(study frame-cost --run "${OUT}/run" --width 64 --height 36 --window 16 8 --reference-spp 16 --paper-spp 8
-    --sobol-spp 1 2 4 --cost-spp 1 --out "${OUT}/frame-cost")
-expect_files("${OUT}/frame-cost" frame_cost.csv run_info.txt window_reference_16/render.exr)
+    --sobol-spp 1 2 4 --adaptive-errors 0.5 0.2 --adaptive-spp 2 8 --cost-spp 1 --out "${OUT}/frame-cost")
+expect_files("${OUT}/frame-cost" frame_cost.csv run_info.txt window_reference_16/render.exr
+             window_adaptive_1/render.exr)
 file(STRINGS "${OUT}/frame-cost/frame_cost.csv" rows)
 list(LENGTH rows count)
-if(NOT count EQUAL 9)  # header, the paper's sampling, three Sobol counts, four models
-  message(FATAL_ERROR "frame_cost.csv has ${count} lines, not 9")
+if(NOT count EQUAL 11)  # header, the paper's sampling, three Sobol counts, two adaptive, four models
+  message(FATAL_ERROR "frame_cost.csv has ${count} lines, not 11")
+endif()
+file(STRINGS "${OUT}/frame-cost/run_info.txt" adaptive REGEX "^frame_seconds_adaptive_at_equal_error: ")
+if(NOT adaptive)
+  message(FATAL_ERROR "the frame-cost study's run_info.txt lacks the adaptive renders' equal-error time")
 endif()
 run(figure 13 --width 120 --height 40 --spp 2 --path-spp 2 --out "${OUT}/figure13")
 expect_files("${OUT}/figure13" figure13_cdrf.png figure13_translucent.exr figure13_path.exr figure13.csv run_info.txt)
