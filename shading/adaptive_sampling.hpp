@@ -36,7 +36,7 @@ namespace rice::shading {
 
 struct AdaptiveSampling {
   double relative_error = 0.0;  ///< τ / the image's mean radiance; 0: off, every pixel takes samples_per_pixel
-  int min_samples = 16;         ///< the pilot's samples per pixel
+  int min_samples = 16;         ///< every pixel's first samples, and each pilot pixel's
   bool on() const { return relative_error > 0.0; }
 };
 
