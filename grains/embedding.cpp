@@ -83,11 +83,7 @@ Embedding embed_points(const Vertices& points, const VolumeMesh& mesh) {
 
 Vertices apply_embedding(const Embedding& embedding, const Vertices& x, const Tets& T) {
   Vertices result(embedding.tet.size(), 3);
-  for (Eigen::Index i = 0; i < embedding.tet.size(); ++i) {
-    const int t = embedding.tet[i];
-    result.row(i) = embedding.weights(i, 0) * x.row(T(t, 0)) + embedding.weights(i, 1) * x.row(T(t, 1)) +
-                    embedding.weights(i, 2) * x.row(T(t, 2)) + embedding.weights(i, 3) * x.row(T(t, 3));
-  }
+  for (Eigen::Index i = 0; i < embedding.tet.size(); ++i) result.row(i) = embedded_point(embedding, i, x, T).transpose();
   return result;
 }
 

@@ -19,6 +19,14 @@ struct Embedding {
 /// among candidates), else the tet with the nearest boundary face.
 Embedding embed_points(const Vertices& points, const VolumeMesh& mesh);
 
+/// Render vertex i's position Σ_k w_k x_k for simulation positions `x` (#V by 3) and tets `T`.
+inline Vec3 embedded_point(const Embedding& embedding, Eigen::Index i, const Vertices& x, const Tets& T) {
+  const int t = embedding.tet[i];
+  Vec3 p = Vec3::Zero();
+  for (int k = 0; k < 4; ++k) p += embedding.weights(i, k) * x.row(T(t, k)).transpose();
+  return p;
+}
+
 /// Render positions Σ_k w_k x_k for simulation positions `x` (#V by 3) and tets `T`.
 Vertices apply_embedding(const Embedding& embedding, const Vertices& x, const Tets& T);
 

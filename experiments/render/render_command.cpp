@@ -154,13 +154,12 @@ shading::Image integrate(const RenderCommandSettings& s, const RenderInputs& in,
 /// once the camera is known), and the bowl in `scene`; returns the box that frames them.
 Eigen::AlignedBox3d add_subject(shading::RenderScene& scene, const RenderCommandSettings& s, const RenderInputs& in,
                                 const std::filesystem::path& frame, RunFrame& grains) {
-  std::vector<Eigen::AlignedBox3d> boxes;
   if (!s.run.empty()) {
     grains = read_run_frame(s.run, *in.variants, frame);
-    boxes = grains.boxes;
-  } else {
-    add_mesh_files(scene, s, in.files, boxes);
+    return add_bowl(scene, s, framing_box(grains.boxes));
   }
+  std::vector<Eigen::AlignedBox3d> boxes;
+  add_mesh_files(scene, s, in.files, boxes);
   return add_bowl(scene, s, framing_box(boxes));
 }
 

@@ -121,13 +121,9 @@ Eigen::AlignedBox3d placed_box(const grains::Vertices& V, const Eigen::Affine3d&
 /// vertices (the coarse tets are inscribed: their vertices' box missed the mesh by 10%).
 Eigen::AlignedBox3d embedded_box(const SoftGrain& grain, const RunVariants& variants) {
   const grains::Embedding& embedding = variants.embedding[grain.variant];
-  const grains::Tets& T = variants.simulation[grain.variant].T;
   Eigen::AlignedBox3d box;
-  for (Eigen::Index v = 0; v < embedding.tet.size(); v += 16) {
-    Eigen::Vector3d p = Eigen::Vector3d::Zero();
-    for (int k = 0; k < 4; ++k) p += embedding.weights(v, k) * grain.x.row(T(embedding.tet[v], k)).transpose();
-    box.extend(p);
-  }
+  for (Eigen::Index v = 0; v < embedding.tet.size(); v += 16)
+    box.extend(grains::embedded_point(embedding, v, grain.x, variants.simulation[grain.variant].T));
   return box;
 }
 
